@@ -1,0 +1,21 @@
+"""balancelab: static balancing of planar linkages.
+
+Build a mechanism in a line, balance it with springs or counterweights by any method of
+the course, and let the design prove itself balanced::
+
+    >>> import balancelab as bl
+    >>> arm = bl.serial_2r_min_preload()            # Singh & Ananthasuresh's 2R
+    >>> arm.balance_report().balanced
+    True
+
+Every method returns a :class:`Design`; plotting, animation, widgets and answer
+checks all take that one type. ``catalog()`` lists every worked example of the course.
+sympy is imported only when a symbolic method is first used.
+"""
+from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy, UnreachableConfiguration
+from .elements import G, Attachment, Joint, Load, Spring, SymbolicParts, weight
+from .kinematics import ExplicitKinematics, FourBarKinematics, Kinematics, TreeKinematics
+from .lever import (generalized_lever, lacoste_lever, lever_kinematics, link_spring, min_preload_lever,
+                    single_link_counterweight, single_link_ordinary_spring, single_link_spring)
+
+__version__ = "0.1.0"

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# One entry point for instructors, students and CI.
+#   bash scripts/course.sh book    set up .venv and build the course site into _build/html
+#   bash scripts/course.sh test    set up .venv and run every test (library, book, labs, browser)
+#   bash scripts/course.sh bench   set up .venv and print the benchmark tables
+# Needs only python3 (>= 3.10) with pip; everything else is installed from the package registries.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+VENV=$ROOT/.venv
+PY=$VENV/bin/python
+
+log() { printf '\n==> %s\n' "$*"; }
+
+setup() {
+    if [ ! -x "$PY" ]; then
+        log "creating $VENV"
+        python3 -m venv "$VENV"
+    fi
+    log "installing balancelab and its extras (pinned by constraints.txt)"
+    "$PY" -m pip install --quiet --upgrade pip
+    "$PY" -m pip install --quiet -c constraints.txt -e ".[test]"
+    if [ -x scripts/setup_extras.sh ]; then
+        bash scripts/setup_extras.sh "$PY"
+    fi
+}
+
+cmd=${1:-help}
+shift || true
+case "$cmd" in
+    book)
+        setup
+        if [ -f scripts/build_book.sh ]; then
+            bash scripts/build_book.sh "$PY" "$@"
+        else
+            log "running the gallery of worked examples"
+            "$PY" -m balancelab.gallery
+        fi
+        ;;
+    test)
+        setup
+        log "running the test suite"
+        "$PY" -m pytest "$@"
+        ;;
+    bench)
+        setup
+        "$PY" benchmarks/run.py "$@"
+        ;;
+    *)
+        echo "usage: bash scripts/course.sh {book|test|bench}" >&2
+        exit 2
+        ;;
+esac
