@@ -18,4 +18,13 @@ from .kinematics import ExplicitKinematics, FourBarKinematics, Kinematics, TreeK
 from .lever import (generalized_lever, lacoste_lever, lever_kinematics, link_spring, min_preload_lever,
                     single_link_counterweight, single_link_ordinary_spring, single_link_spring)
 
+from .serial import (free_choice_count, max_work_angle, serial_2r_base_springs, serial_2r_kinematics,
+                     serial_2r_min_preload, serial_2r_parallelogram, serial_2r_simplified,
+                     serial_2r_two_springs)
+from .fourbar import (equivalent_masses, fourbar_counterweights, fourbar_joints, fourbar_two_springs,
+                      singh_fourbar)
+from .scissors import scissors_kinematics, scissors_lift
+from .peaucellier import PeaucellierKinematics, peaucellier_board
+from .catalog import Entry, catalog
+
 __version__ = "0.1.0"

@@ -569,9 +569,12 @@ class Design:
         if key not in self._sym_cache:
             import sympy as sp
 
-            syms = self.kinematics.symbols()
+            kin = self.kinematics
+            if parametric and self.symbolic is not None and self.symbolic.kinematics is not None:
+                kin = self.symbolic.kinematics
+            syms = kin.symbols()
             loads, springs = self._symbolic_parts(parametric)
-            point = self.kinematics.symbolic_point
+            point = kin.symbolic_point
             vl = sp.S.Zero
             for body, p, force in loads:
                 x, y = point(body, p, syms)
@@ -581,14 +584,36 @@ class Design:
                 ax, ay = point(ba, pa, syms)
                 bx, by = point(bb, pb, syms)
                 d2 = (bx - ax) ** 2 + (by - ay) ** 2
-                if l0 == 0:
+                if sp.sympify(l0).is_zero:
                     vs += k / 2 * d2
                 else:
                     length = sp.powdenest(sp.sqrt(sp.factor(sp.trigsimp(sp.expand(d2)))), force=True)
+                    length = length.replace(sp.Abs, lambda x: x)
+                    self._check_symbolic_length(kin, syms, length, ((ba, pa), (bb, pb)), parametric)
                     vs += k / 2 * (length - l0) ** 2
             self._sym_cache[key] = (vl, vs)
         vl, vs = self._sym_cache[key]
         return (vl, vs) if split else vl + vs
+
+    def _check_symbolic_length(self, kin, syms, length, ends, parametric) -> None:
+        """A finite-free-length spring's symbolic length must match the numeric one."""
+        import sympy as sp
+
+        q = self.sample(3, seed=1)
+        values = dict(self.symbolic.values) if (parametric and self.symbolic is not None) else {}
+        for qi in q:
+            sub = dict(values)
+            sub.update(dict(zip(syms, qi)))
+            num = float(sp.sympify(length).subs(sub).evalf())
+            pts = []
+            for body, p in ends:
+                pp = tuple(float(sp.sympify(v).subs(values)) for v in p)
+                pts.append(self.world_points(qi, [(body, pp)])[0])
+            ref = float(np.hypot(*(pts[1] - pts[0])))
+            if not np.isclose(num, ref, rtol=1e-9, atol=1e-12):
+                raise NotImplementedError(
+                    f"{self.name}: a finite-free-length spring's length is not a polynomial in the "
+                    "sines and cosines of the coordinates; no symbolic energy is available")
 
     def trig_coefficients(self, parametric: bool = True) -> dict:
         """Coefficients of the potential energy in a unique trigonometric form.
@@ -651,8 +676,11 @@ class Design:
         for term, coeff in self.trig_coefficients(parametric).items():
             if term == 1:
                 continue
-            eq = sp.Eq(sp.factor(coeff) if parametric and self.symbolic is not None else coeff, 0)
-            if eq is not sp.true and eq not in eqs:
+            expr = sp.factor(coeff) if parametric and self.symbolic is not None else coeff
+            if sp.sympify(expr).is_zero:
+                continue
+            eq = sp.Eq(expr, 0, evaluate=False)
+            if eq not in eqs:
                 eqs.append(eq)
         return eqs
 

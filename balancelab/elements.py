@@ -226,9 +226,12 @@ class SymbolicParts:
 
     A method that keeps its parameters symbolic builds its loads and springs twice from
     one builder: once with numbers (the design) and once with sympy symbols (this).
-    ``values`` maps every free symbol to its number in the design.
+    ``values`` maps every free symbol to its number in the design. ``kinematics``, when
+    given, is a kinematics whose joint points are sympy expressions too (link lengths as
+    symbols); it is used only for :meth:`balancelab.Design.potential_energy_symbolic`.
     """
 
     loads: tuple = ()
     springs: tuple = ()
     values: dict = field(default_factory=dict)
+    kinematics: object = None
