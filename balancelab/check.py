@@ -1,0 +1,693 @@
+"""Answer checks for the labs: ``check("2.1", k)`` tells a student whether an answer is right.
+
+Every task of every lab is registered here with the name of the variable that holds its
+answer in the notebook (:func:`tasks`), so the grader (:mod:`balancelab.grading`) can
+check a whole notebook at once. Three kinds of checks:
+
+* **numeric**: a number in the stated SI unit, or a string or ``(value, "unit")`` pair
+  with a unit (``"12 cm"``, ``(0.12, "m")``), within a stated relative tolerance;
+* **symbolic**: a sympy expression (or a string sympy can parse) accepted when it is
+  *equivalent* to the expected one: the difference simplifies to zero (with a numeric
+  spot check at random positive values as a fallback);
+* **design**: the student's design is built and its
+  :meth:`~balancelab.Design.balance_report` is run; the check passes when the energy is
+  constant (within the stated tolerance) and the task's constraints hold, so many
+  designs are right.
+
+A check never reveals the expected value and never raises: wrong types, NaN, a missing
+unit or a wrong shape give a friendly :class:`Verdict` instead of a traceback.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from numbers import Real
+from typing import Any, Callable
+
+import numpy as np
+
+from .design import Design, UnreachableConfiguration
+from .elements import G, Joint, Load, Spring, weight
+from .kinematics import FourBarKinematics
+from .lever import lever_kinematics
+
+__all__ = ["Verdict", "Task", "check", "tasks", "lab_tasks", "explain", "AnswerError",
+           "lab1_fourbar", "lab2_lever"]
+
+# --------------------------------------------------------------------------- verdicts
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The outcome of one check.
+
+    Attributes
+    ----------
+    task : str
+        Task id, e.g. ``"2.1"``.
+    correct : bool
+        Whether the answer is accepted.
+    message : str
+        What was found (never the expected value).
+    hint : str
+        What to look at next (empty when correct).
+    score : float
+        Points earned (0 or the task's points).
+    points : float
+        Points the task is worth.
+    """
+
+    task: str
+    correct: bool
+    message: str
+    hint: str = ""
+    score: float = 0.0
+    points: float = 1.0
+
+    def __bool__(self) -> bool:
+        return self.correct
+
+    def __str__(self) -> str:
+        head = "✔ correct" if self.correct else "✘ not yet"
+        text = f"Task {self.task}: {head}. {self.message}"
+        if self.hint and not self.correct:
+            text += f"\n  Hint: {self.hint}"
+        return text
+
+    __repr__ = __str__
+
+
+class AnswerError(ValueError):
+    """A malformed answer; its message is shown to the student as the verdict."""
+
+
+@dataclass(frozen=True)
+class Task:
+    """One task of a lab.
+
+    Attributes
+    ----------
+    id : str
+        ``"<lab>.<n>"``, e.g. ``"1.3"``.
+    lab : str
+        ``"lab1"`` ... ``"lab6"``.
+    title : str
+        One line saying what is asked.
+    variable : str
+        Name of the notebook variable holding the answer (what the grader reads).
+    kind : str
+        ``"numeric"``, ``"symbolic"`` or ``"design"``.
+    expects : str
+        What an answer looks like, with units and tolerance.
+    points : float
+        Points the task is worth.
+    """
+
+    id: str
+    lab: str
+    title: str
+    variable: str
+    kind: str
+    expects: str
+    judge: Callable[[Any], tuple[bool, str, str]] = field(repr=False, compare=False)
+    points: float = 1.0
+
+
+_TASKS: dict[str, Task] = {}
+
+
+def _task(id: str, title: str, variable: str, kind: str, expects: str, points: float = 1.0):
+    def register(fn):
+        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points)
+        return fn
+
+    return register
+
+
+def tasks(lab: str | int | None = None) -> list[Task]:
+    """The registered tasks, in order, optionally of one lab.
+
+    Parameters
+    ----------
+    lab : str or int, optional
+        ``"lab2"``, ``"2"`` or ``2``; all labs when omitted.
+
+    Returns
+    -------
+    list of Task
+
+    Examples
+    --------
+    >>> [t.id for t in tasks(2)][:2]
+    ['2.1', '2.2']
+    """
+    if lab is None:
+        return list(_TASKS.values())
+    key = str(lab)
+    key = key if key.startswith("lab") else "lab" + key
+    return [t for t in _TASKS.values() if t.lab == key]
+
+
+lab_tasks = tasks
+
+
+def explain(task_id: str) -> str:
+    """What a task asks and what an answer looks like (units, tolerance).
+
+    Parameters
+    ----------
+    task_id : str
+        E.g. ``"2.1"``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(explain("1.1").splitlines()[0])
+    Task 1.1: distance of the counterweight from the pivot
+    """
+    t = _TASKS.get(str(task_id))
+    if t is None:
+        raise KeyError(f"no task {task_id!r}; tasks are {', '.join(_TASKS)}")
+    return f"Task {t.id}: {t.title}\n  store your answer in `{t.variable}`: {t.expects}"
+
+
+def check(task_id: str, answer: Any) -> Verdict:
+    """Check a student's answer to one task.
+
+    Parameters
+    ----------
+    task_id : str
+        The task, e.g. ``"2.1"`` (see :func:`tasks`).
+    answer : object
+        The answer in the form the task states (:func:`explain`).
+
+    Returns
+    -------
+    Verdict
+        Prints as a one-line verdict with a hint; ``bool(verdict)`` is whether it is right.
+        Never raises for a malformed answer.
+
+    Examples
+    --------
+    >>> check("2.1", "12 apples").correct
+    False
+    >>> print(check("1.1", float("nan")))
+    Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
+      Hint: Store a plain number in metres or a string such as '0.25 m'.
+    """
+    t = _TASKS.get(str(task_id))
+    if t is None:
+        return Verdict(str(task_id), False, f"There is no task {task_id!r}.",
+                       f"Tasks are: {', '.join(_TASKS)}.", 0.0, 0.0)
+    try:
+        ok, message, hint = t.judge(answer)
+    except AnswerError as e:
+        ok, message, hint = False, str(e), getattr(e, "hint", "") or t.expects
+    except Exception as e:  # a check must never crash the student's notebook
+        ok, message, hint = (False, f"Your answer could not be checked ({type(e).__name__}).",
+                             t.expects)
+    return Verdict(t.id, bool(ok), message, hint, t.points if ok else 0.0, t.points)
+
+
+# ----------------------------------------------------------------------- parsing helpers
+
+_UNITS = {
+    "length": ("m", {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "km": 1e3}),
+    "mass": ("kg", {"kg": 1.0, "g": 1e-3}),
+    "force": ("N", {"N": 1.0, "kN": 1e3, "mN": 1e-3}),
+    "stiffness": ("N/m", {"N/m": 1.0, "kN/m": 1e3, "N/mm": 1e3, "N/cm": 1e2}),
+    "energy": ("J", {"J": 1.0, "mJ": 1e-3, "kJ": 1e3, "Nm": 1.0, "N*m": 1.0, "N m": 1.0}),
+    "first moment": ("kg m", {"kg m": 1.0, "kg*m": 1.0, "kgm": 1.0, "g mm": 1e-6}),
+    "torque": ("N m", {"N m": 1.0, "Nm": 1.0, "N*m": 1.0, "N mm": 1e-3}),
+    "angle": ("rad", {"rad": 1.0, "deg": math.pi / 180, "°": math.pi / 180}),
+    "ratio": ("", {"": 1.0, "%": 1e-2}),
+}
+
+
+def _err(message: str, hint: str = "") -> AnswerError:
+    e = AnswerError(message)
+    e.hint = hint
+    return e
+
+
+def _plain_number(x) -> float | None:
+    """A finite-or-not float if ``x`` is a plain real number, else None."""
+    if isinstance(x, bool):
+        return None
+    if isinstance(x, (Real, np.integer, np.floating)):
+        return float(x)
+    if isinstance(x, np.ndarray) and x.shape == () and np.issubdtype(x.dtype, np.number):
+        return float(x)
+    try:
+        import sympy as sp
+
+        if isinstance(x, sp.Basic) and x.is_number and x.is_real is not False:
+            return float(x)
+    except (TypeError, ValueError):
+        return None
+    return None
+
+
+def quantity(answer, dimension: str, what: str = "the answer") -> float:
+    """Turn an answer into a float in SI units, or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : float or str or (float, str)
+        A plain number in the SI unit of ``dimension``, a string ``"12.5 cm"`` or a pair
+        ``(12.5, "cm")``.
+    dimension : str
+        One of ``length, mass, force, stiffness, energy, first moment, torque, angle,
+        ratio``.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    float
+        The value in SI units.
+
+    Examples
+    --------
+    >>> quantity("12.5 cm", "length")
+    0.125
+    >>> quantity((2, "kN/m"), "stiffness")
+    2000.0
+    """
+    si, table = _UNITS[dimension]
+    example = f"a plain number in {si} or a string such as '2.5 {si}'" if si else "a plain number"
+    hint = f"Store {example}."
+    value, unit = None, None
+    if isinstance(answer, str):
+        m = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*", answer)
+        if not m:
+            raise _err(f"{what.capitalize()} {answer!r} does not start with a number.", hint)
+        value, unit = float(m.group(1)), m.group(2)
+        if unit == "" and si:
+            raise _err(f"{what.capitalize()} {answer!r} has no unit.",
+                       f"Write the unit, e.g. '{answer.strip()} {si}', or store a plain number in {si}.")
+    elif isinstance(answer, tuple) and len(answer) == 2 and isinstance(answer[1], str):
+        value, unit = _plain_number(answer[0]), answer[1].strip()
+        if value is None:
+            raise _err(f"The first item of {what} should be a number, got {type(answer[0]).__name__}.",
+                       hint)
+    else:
+        value = _plain_number(answer)
+        if value is None:
+            kind = type(answer).__name__
+            if isinstance(answer, (list, tuple, np.ndarray)):
+                raise _err(f"{what.capitalize()} should be one number, got a {kind} of "
+                           f"{len(answer)} items.", hint)
+            raise _err(f"{what.capitalize()} should be a number, got {kind}"
+                       f"{'' if answer is None else ' ' + _short(answer)}.", hint)
+        unit = si
+    if not math.isfinite(value):
+        raise _err("The answer is NaN or infinite; give a finite number." if what == "the answer"
+                   else f"{what.capitalize()} is NaN or infinite; give a finite number.", hint)
+    if unit not in table:
+        known = ", ".join(repr(u) for u in table if u)
+        raise _err(f"Unit {unit!r} is not a unit of {dimension} here.", f"Use one of {known}.")
+    return value * table[unit]
+
+
+def _short(x) -> str:
+    s = repr(x)
+    return s if len(s) <= 40 else s[:37] + "..."
+
+
+def vector(answer, n: int, dimension: str, what: str = "the answer") -> list[float]:
+    """Parse a tuple of ``n`` quantities (see :func:`quantity`), or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : sequence
+        ``n`` items, each a number in SI units or a string with a unit.
+    n : int
+        Number of items expected.
+    dimension : str
+        Dimension of every item.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    list of float
+
+    Examples
+    --------
+    >>> vector((1, "20 cm"), 2, "length")
+    [1.0, 0.2]
+    """
+    if isinstance(answer, (str, bytes, dict)) or not hasattr(answer, "__len__"):
+        raise _err(f"{what.capitalize()} should be a tuple of {n} numbers, got {type(answer).__name__}.",
+                   f"Write it like ({', '.join(['...'] * n)}).")
+    items = list(np.asarray(answer, dtype=object).ravel()) if isinstance(answer, np.ndarray) else list(answer)
+    if len(items) != n:
+        raise _err(f"{what.capitalize()} should have {n} items, got {len(items)}.",
+                   f"Write it like ({', '.join(['...'] * n)}).")
+    return [quantity(v, dimension, f"item {i + 1} of {what}") for i, v in enumerate(items)]
+
+
+def point(answer, what: str) -> np.ndarray:
+    """A planar point ``(x, y)`` in metres (strings with units allowed)."""
+    return np.array(vector(answer, 2, "length", what))
+
+
+def _compare(value: float, expected: float, rtol: float, unit: str) -> tuple[bool, str, str]:
+    """Numeric verdict without revealing ``expected``."""
+    tol = f"{rtol * 100:g} %"
+    if expected != 0 and abs(value - expected) <= rtol * abs(expected):
+        return True, f"Within {tol} of the expected value.", ""
+    if expected == 0 and abs(value) <= rtol:
+        return True, f"Within {rtol:g} {unit} of the expected value.", ""
+    hint = ""
+    if expected != 0 and value != 0:
+        ratio = value / expected
+        for factor, why in ((G, "a factor g = 9.81 too large: did you use a mass where a weight (N) "
+                               "is needed, or multiply by g twice?"),
+                            (1 / G, "a factor g = 9.81 too small: did you forget g?"),
+                            (1e3, "a factor 1000 too large: check mm against m."),
+                            (1e-3, "a factor 1000 too small: check mm against m."),
+                            (2.0, "about twice too large: look for a stray factor 2."),
+                            (0.5, "about half of what it should be: look for a missing factor 2."),
+                            (-1.0, "the right size but the wrong sign.")):
+            if abs(ratio / factor - 1) < 0.02:
+                hint = "Your answer is " + why
+                break
+        if not hint:
+            hint = (f"Your answer is too {'large' if ratio > 1 else 'small'} "
+                    f"(outside the {tol} tolerance). Recheck the moment balance about the pivot.")
+    return False, f"Not within {tol} of the expected value.", hint
+
+
+def numeric(answer, expected: float, dimension: str, rtol: float = 5e-3) -> tuple[bool, str, str]:
+    """Numeric check of one quantity (see :func:`quantity`) within relative tolerance ``rtol``."""
+    value = quantity(answer, dimension)
+    return _compare(value, expected, rtol, _UNITS[dimension][0])
+
+
+def numeric_vector(answer, expected, dimension: str, rtol: float = 5e-3,
+                   names=None) -> tuple[bool, str, str]:
+    """Numeric check of a tuple of quantities, item by item."""
+    values = vector(answer, len(expected), dimension)
+    names = names or [f"item {i + 1}" for i in range(len(expected))]
+    bad = []
+    hint = ""
+    for name, v, e in zip(names, values, expected):
+        ok, _, h = _compare(v, e, rtol, _UNITS[dimension][0])
+        if not ok:
+            bad.append(name)
+            hint = hint or f"{name}: {h}"
+    if not bad:
+        return True, f"All {len(values)} values within {rtol * 100:g} % of the expected ones.", ""
+    return False, f"{', '.join(bad)} not within {rtol * 100:g} %.", hint
+
+
+def symbolic(answer, expected, names: str, what: str = "the expression") -> tuple[bool, str, str]:
+    """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
+
+    Symbols are matched by name, whatever their assumptions. The difference must simplify
+    to zero; when ``simplify`` cannot decide, the two are compared at random positive
+    values of the symbols (relative 1e-9), which equivalent expressions always pass.
+    """
+    import sympy as sp
+
+    allowed = {n: sp.Symbol(n, positive=True) for n in names.split()}
+    hint = f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
+    if isinstance(answer, (str,)):
+        try:
+            expr = sp.sympify(answer, locals=dict(allowed))
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError):
+            raise _err(f"{what.capitalize()} {answer!r} could not be read as a formula.", hint)
+    elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
+        expr = sp.sympify(answer)
+    else:
+        raise _err(f"{what.capitalize()} should be a sympy expression, got {type(answer).__name__}.",
+                   hint)
+    if isinstance(expr, sp.Equality):
+        raise _err(f"{what.capitalize()} is an equation; give the right-hand side only "
+                   "(an expression), e.g. the value of k.", hint)
+    if not isinstance(expr, sp.Expr):
+        raise _err(f"{what.capitalize()} is not an algebraic expression.", hint)
+    extra = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)
+    if extra:
+        raise _err(f"{what.capitalize()} uses symbols not in the problem: {', '.join(extra)}.", hint)
+    expr = expr.subs({s: allowed[str(s)] for s in expr.free_symbols})
+    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise _err(f"{what.capitalize()} contains an infinity or NaN.", hint)
+    expected = sp.sympify(expected).subs({s: allowed[str(s)] for s in sp.sympify(expected).free_symbols})
+    diff = sp.simplify(expr - expected)
+    if diff == 0:
+        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
+    rng = np.random.default_rng(1)
+    syms = sorted(allowed.values(), key=str)
+    f_a = sp.lambdify(syms, expr, "numpy")
+    f_e = sp.lambdify(syms, expected, "numpy")
+    same = True
+    for _ in range(6):
+        vals = rng.uniform(0.3, 2.0, len(syms))
+        a, e = complex(f_a(*vals)), complex(f_e(*vals))
+        if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
+            same = False
+            break
+    if same:
+        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
+    return False, f"{what.capitalize()} is not equivalent to the expected one.", \
+        "Write the potential energy, collect the terms in sin and cos of the angle, and set " \
+        "each coefficient to zero."
+
+
+def _as_mapping(answer, keys, what="the design") -> dict:
+    if not isinstance(answer, dict):
+        raise _err(f"{what.capitalize()} should be a dict with keys {', '.join(map(repr, keys))}, "
+                   f"got {type(answer).__name__}.", f"Write it like {{{', '.join(repr(k) + ': ...' for k in keys)}}}.")
+    missing = [k for k in keys if k not in answer]
+    if missing:
+        raise _err(f"{what.capitalize()} is missing {', '.join(map(repr, missing))}.",
+                   f"Give all of {', '.join(map(repr, keys))}.")
+    return answer
+
+
+#: Relative tolerance on the energy variation used by design checks (numbers typed by hand
+#: with 4-5 significant digits balance to about 1e-4).
+DESIGN_TOLERANCE = 1e-3
+
+
+def design_balanced(design: Design, constraints: list[tuple[bool, str]],
+                    tolerance: float = DESIGN_TOLERANCE, n: int = 400) -> tuple[bool, str, str]:
+    """Verdict for a design task: balanced within ``tolerance`` and every constraint met.
+
+    Parameters
+    ----------
+    design : Design
+        The student's design, built by the check.
+    constraints : list of (bool, str)
+        ``(met, description)`` for each constraint of the task.
+    tolerance : float
+        Largest accepted energy variation relative to the energy scale.
+    n : int
+        Configurations examined.
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``.
+    """
+    try:
+        rep = design.balance_report(n=n, tolerance=tolerance)
+    except (UnreachableConfiguration, RuntimeError, ValueError) as e:
+        return False, f"Your design could not be evaluated: {e}", "Check the geometry."
+    failed = [text for ok, text in constraints if not ok]
+    spread = ("less than 1e-9" if rep.variation < 1e-9 else f"{rep.variation:.1e}")
+    bal = (f"balanced (energy varies by {spread} of its scale)" if rep.balanced
+           else f"NOT balanced: its energy varies by {rep.variation:.1e} of its scale "
+                f"(at most {tolerance:g} accepted)")
+    if rep.balanced and not failed:
+        return True, f"Your design is {bal} and meets every constraint.", ""
+    msg = f"Your design is {bal}"
+    msg += "." if not failed else f"; it violates: {'; '.join(failed)}."
+    hint = ("Keep 4-5 significant digits, and make the balance condition hold exactly."
+            if not rep.balanced else "Use the free choices to move the design inside the constraints.")
+    return False, msg, hint
+
+
+# ============================================================================ lab 1
+
+#: Four-bar of lab 1 (lengths m, masses kg): links are uniform bars, except the
+#: coupler, whose centre of mass is on BC at ``g3`` from B.
+LAB1_FOURBAR = dict(A=(0.0, 0.0), D=(0.6, 0.0), r2=0.2, r3=0.5, r4=0.4,
+                    m2=0.8, m3=1.2, g3=0.2, m4=1.0, max_mass=6.0, max_radius=0.25)
+
+
+def lab1_fourbar(crank_cw=None, rocker_cw=None) -> Design:
+    """The four-bar of lab 1, optionally with counterweights on the crank and the rocker.
+
+    Parameters
+    ----------
+    crank_cw, rocker_cw : (float, (float, float)), optional
+        ``(mass kg, (x, y) m)``: a counterweight on the crank (local frame: origin at the
+        ground pivot A, x along AB) or on the rocker (origin at pivot D, x along DC).
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab1_fourbar().balance_report().balanced
+    False
+    """
+    p = LAB1_FOURBAR
+    kin = FourBarKinematics(p["A"], p["D"], p["r2"], p["r3"], p["r4"], branch=1)
+    loads = [weight(1, (p["r2"] / 2, 0.0), p["m2"], "crank"),
+             weight(2, (p["g3"], 0.0), p["m3"], "coupler"),
+             weight(3, (p["r4"] / 2, 0.0), p["m4"], "rocker")]
+    for body, cw, name in ((1, crank_cw, "crank counterweight"), (3, rocker_cw, "rocker counterweight")):
+        if cw is not None:
+            m, pt = cw
+            loads.append(weight(body, tuple(pt), float(m), name, kind="counterweight"))
+    joints = [Joint(0, p["A"], 1, (0.0, 0.0)), Joint(1, (p["r2"], 0.0), 2, (0.0, 0.0)),
+              Joint(2, (p["r3"], 0.0), 3, (p["r4"], 0.0)), Joint(0, p["D"], 3, (0.0, 0.0))]
+    return Design("lab 1 four-bar", ("ground", "crank", "coupler", "rocker"), joints, kin, loads,
+                  labels={"A": (0, p["A"]), "B": (1, (p["r2"], 0.0)), "C": (3, (p["r4"], 0.0)),
+                          "D": (0, p["D"])},
+                  reference="Lecture 35: coupler replaced by equivalent masses at its joints")
+
+
+@_task("1.1", "distance of the counterweight from the pivot", "r_c", "numeric",
+       "a number in metres (or a string like '22 cm'); accepted within 0.5 %")
+def _t11(answer):
+    # lamp head 1.2 kg at 0.45 m on a uniform 0.6 kg arm, counterweight 3 kg
+    return numeric(answer, (1.2 * 0.45 + 0.6 * 0.45 / 2) / 3.0, "length")
+
+
+@_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",
+       "a sympy expression in m, r, m_l, m_c (any equivalent form is accepted)")
+def _t12(answer):
+    import sympy as sp
+
+    m, r, ml, mc = sp.symbols("m r m_l m_c", positive=True)
+    return symbolic(answer, (m * r + ml * r / 2) / mc, "m r m_l m_c", "your r_c")
+
+
+@_task("1.3", "equivalent masses of the coupler at B and C", "m_equivalent", "numeric",
+       "a pair (m_B, m_C) in kg; each accepted within 0.5 %")
+def _t13(answer):
+    p = LAB1_FOURBAR
+    mC = p["m3"] * p["g3"] / p["r3"]
+    return numeric_vector(answer, (p["m3"] - mC, mC), "mass", names=("m_B", "m_C"))
+
+
+@_task("1.4", "counterweights that balance the four-bar (open design)", "counterweights", "design",
+       "a dict {'crank': (mass, (x, y)), 'rocker': (mass, (x, y))} in kg and m, local frames; "
+       "each mass at most 6 kg and at most 0.25 m from its pivot; balanced to 0.1 %", points=2)
+def _t14(answer):
+    a = _as_mapping(answer, ("crank", "rocker"), "your counterweights")
+    p = LAB1_FOURBAR
+    parts, cons = {}, []
+    for key in ("crank", "rocker"):
+        item = a[key]
+        if not isinstance(item, (tuple, list)) or len(item) != 2:
+            raise _err(f"counterweights[{key!r}] should be a pair (mass, (x, y)).",
+                       "E.g. (2.0, (-0.1, 0.0)).")
+        m = quantity(item[0], "mass", f"the {key} counterweight mass")
+        pt = point(item[1], f"the {key} counterweight position")
+        if m < 0:
+            raise _err(f"The {key} counterweight mass is negative.", "Masses are >= 0.")
+        parts[key] = (m, tuple(pt))
+        cons.append((m <= p["max_mass"] + 1e-12, f"{key} counterweight heavier than {p['max_mass']} kg"))
+        cons.append((float(np.hypot(*pt)) <= p["max_radius"] + 1e-12,
+                     f"{key} counterweight farther than {p['max_radius']} m from its pivot"))
+    d = lab1_fourbar(parts["crank"], parts["rocker"])
+    return design_balanced(d, cons)
+
+
+# ============================================================================ lab 2
+
+#: The lever of lab 2's design task: load W (N) at distance l (m) and the limits.
+LAB2_LEVER = dict(W=30.0, l=0.6, k_max=400.0, anchor_max=0.35, attach_max=0.6)
+
+
+def lab2_lever(k: float, a, b, *, W: float | None = None, l: float | None = None,
+               free_length: float = 0.0) -> Design:
+    """A lever with a load ``W`` at ``(l, 0)`` and one spring from ground point ``b`` to lever point ``a``.
+
+    Parameters
+    ----------
+    k : float
+        Spring rate (N/m), > 0.
+    a : (float, float)
+        Attachment on the lever, local frame (m).
+    b : (float, float)
+        Anchor on the ground (m).
+    W, l : float, optional
+        Load (N) and its distance (m); lab 2's design task values by default.
+    free_length : float
+        Free length of the spring (m); 0 for a ZFL spring.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2)).balance_report().balanced
+    True
+    """
+    W = LAB2_LEVER["W"] if W is None else W
+    l = LAB2_LEVER["l"] if l is None else l
+    return Design("lab 2 lever", ("ground", "lever"), [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))],
+                  lever_kinematics(), [Load(1, (l, 0.0), (0.0, -W), "W")],
+                  [Spring(k, free_length, (0, tuple(b)), (1, tuple(a)), name="k")],
+                  labels={"O": (0, (0.0, 0.0)), "a": (1, tuple(a)), "b": (0, tuple(b))})
+
+
+@_task("2.1", "spring rate that balances the lamp arm", "k_lamp", "numeric",
+       "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %")
+def _t21(answer):
+    return numeric(answer, 1.5 * G * 0.4 / (0.25 * 0.12), "stiffness")
+
+
+@_task("2.2", "balance conditions of the generalized lever: (a_y, k)", "lever_conditions", "symbolic",
+       "a pair (a_y, k) of sympy expressions in W, l, a_x, b_x, b_y; any equivalent form accepted")
+def _t22(answer):
+    import sympy as sp
+
+    if isinstance(answer, dict):
+        answer = (answer.get("a_y"), answer.get("k"))
+    if isinstance(answer, (str, sp.Basic)) or not hasattr(answer, "__len__") or len(answer) != 2:
+        raise _err("The answer should be a pair (a_y, k) of expressions.",
+                   "Write it like (a_y_expr, k_expr).")
+    W, l, ax, bx, by = sp.symbols("W l a_x b_x b_y", positive=True)
+    names = "W l a_x b_x b_y"
+    ok1, m1, h1 = symbolic(answer[0], -ax * bx / by, names, "your a_y")
+    ok2, m2, h2 = symbolic(answer[1], W * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k")
+    return ok1 and ok2, f"{m1} {m2}", h1 or h2
+
+
+@_task("2.3", "constant potential energy of the balanced LaCoste lever", "lever_energy", "numeric",
+       "a number in J (energies measured from the pivot height, spring at zero length); "
+       "accepted within 0.5 %")
+def _t23(answer):
+    W, l, ax, by = 20.0, 0.5, 0.1, 0.25
+    return numeric(answer, W * l / 2 * (ax / by + by / ax), "energy")
+
+
+@_task("2.4", "a ZFL spring that balances the lever within the limits (open design)", "lever_spring",
+       "design", "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; "
+       "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 %", points=2)
+def _t24(answer):
+    a = _as_mapping(answer, ("k", "a", "b"), "your spring")
+    p = LAB2_LEVER
+    k = quantity(a["k"], "stiffness", "k")
+    pa, pb = point(a["a"], "a"), point(a["b"], "b")
+    if k <= 0:
+        raise _err("k must be positive.", "A spring rate is > 0 N/m.")
+    cons = [(k <= p["k_max"] * (1 + 1e-12), f"k above {p['k_max']:g} N/m"),
+            (np.hypot(*pb) <= p["anchor_max"] + 1e-12, f"anchor b farther than {p['anchor_max']} m from the pivot"),
+            (np.hypot(*pa) <= p["attach_max"] + 1e-12, f"attachment a farther than {p['attach_max']} m from the pivot")]
+    return design_balanced(lab2_lever(k, tuple(pa), tuple(pb)), cons)

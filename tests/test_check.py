@@ -1,0 +1,246 @@
+"""Answer checks: right answers pass (from an independent route), wrong ones fail, nothing leaks."""
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import balancelab as bl
+from balancelab import check as ck
+from balancelab.check import Verdict, check, explain, tasks
+from balancelab.fourbar import fourbar_counterweights
+
+# ----------------------------------------------------------------- expected answers, derived
+# through the library (an independent route from the formulas inside balancelab.check)
+
+
+def _lamp_r_c():
+    return bl.single_link_counterweight(1.2, 0.45, 3.0, link_mass=0.6).parameters["r_c"]
+
+
+def _lab1_counterweights(m_c2, m_c4):
+    p = ck.LAB1_FOURBAR
+    d = fourbar_counterweights(A=p["A"], B=p["D"], crank=p["r2"], coupler=p["r3"], rocker=p["r4"],
+                               m=(p["m2"], p["m3"], p["m4"]),
+                               p=((p["r2"] / 2, 0.0), (p["g3"], 0.0), (p["r4"] / 2, 0.0)),
+                               counter_masses=(m_c2, m_c4))
+    q = d.parameters
+    return {"crank": (m_c2, (q["cw2_x"], q["cw2_y"])), "rocker": (m_c4, (q["cw4_x"], q["cw4_y"]))}
+
+
+def _equivalent():
+    p = ck.LAB1_FOURBAR
+    from balancelab.fourbar import equivalent_masses
+
+    c = equivalent_masses(p["r3"], p["r2"], p["r4"], p["m3"], (p["g3"], 0.0))["c"].real
+    return (p["m3"] * (1 - c), p["m3"] * c)
+
+
+def _lever_conditions():
+    """(a_y, k) of the generalized lever from Design.balance_conditions (sympy)."""
+    d = bl.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)
+    W, l, ax, ay, bx, by, k = sp.symbols("W l a_x a_y b_x b_y k", positive=True)
+    eqs = [sp.sympify(e.lhs).subs({s: sp.Symbol(str(s), positive=True) for s in e.lhs.free_symbols})
+           for e in d.balance_conditions()]
+    ay_r = sp.Symbol("a_y", real=True)
+    eqs = [e.subs(sp.Symbol("a_y", positive=True), ay_r) for e in eqs]
+    eqs = [e.subs({s: sp.Symbol(str(s), real=True) for s in e.free_symbols if str(s) == "a_y"}) for e in eqs]
+    sol = sp.solve(eqs, [ay_r, k], dict=True)
+    sol = [s for s in sol if s[k] != 0][0]
+    return sol[ay_r], sol[k]
+
+
+RIGHT = {
+    "1.1": lambda: _lamp_r_c(),
+    "1.2": lambda: sp.sympify("r*(2*m + m_l)/(2*m_c)"),
+    "1.3": _equivalent,
+    "1.4": lambda: _lab1_counterweights(2.0, 2.0),
+    "2.1": lambda: bl.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters["k"],
+    "2.2": _lever_conditions,
+    "2.3": lambda: bl.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters["PE"],
+    "2.4": lambda: {"k": 300.0, "a": (0.3, 0.0), "b": (0.0, 0.2)},
+}
+
+
+def test_every_task_has_a_right_answer_here():
+    assert set(RIGHT) <= {t.id for t in tasks()}
+    for t in tasks():
+        assert t.kind in ("numeric", "symbolic", "design")
+        assert t.variable.isidentifier()
+        assert "Task" in explain(t.id) and t.variable in explain(t.id)
+
+
+@pytest.mark.parametrize("tid", sorted(RIGHT))
+def test_right_answer_accepted(tid):
+    v = check(tid, RIGHT[tid]())
+    assert isinstance(v, Verdict)
+    assert v.correct, str(v)
+    assert v.score == v.points > 0
+    assert "✔" in str(v)
+
+
+@pytest.mark.parametrize("tid", [t for t in sorted(RIGHT) if ck._TASKS[t].kind == "numeric"])
+def test_numeric_tolerance_is_the_stated_half_percent(tid):
+    right = RIGHT[tid]()
+    scale = (lambda f: tuple(f * x for x in right)) if isinstance(right, tuple) else (lambda f: f * right)
+    assert check(tid, scale(1.004)).correct
+    assert check(tid, scale(0.996)).correct
+    for f in (1.006, 0.994, 2.0, -1.0):
+        v = check(tid, scale(f))
+        assert not v.correct and v.hint, str(v)
+    assert "0.5 %" in ck._TASKS[tid].expects
+
+
+@pytest.mark.parametrize("tid", [t for t in sorted(RIGHT) if ck._TASKS[t].kind == "numeric"])
+def test_wrong_answers_never_reveal_the_expected_value(tid):
+    right = RIGHT[tid]()
+    values = right if isinstance(right, tuple) else (right,)
+    wrongs = [tuple(x * f for x in values) if isinstance(right, tuple) else right * f
+              for f in (0.5, 1.1, 9.81, 1 / 9.81, 1000.0)]
+    for w in wrongs:
+        text = str(check(tid, w))
+        for x in values:
+            for fmt in ("{:.2f}", "{:.3g}", "{:.4g}", "{:.6g}", "{}"):
+                s = fmt.format(x)
+                if len(s.strip("0.-")) >= 2:
+                    assert s not in text, (s, text)
+
+
+def test_hints_recognise_common_slips():
+    k = RIGHT["2.1"]()
+    assert "forget g" in check("2.1", k / bl.G).hint
+    assert "1000" in check("1.1", RIGHT["1.1"]() * 1000).hint
+    assert "sign" in check("2.3", -RIGHT["2.3"]()).hint
+
+
+def test_units_are_understood():
+    r = RIGHT["1.1"]()
+    assert check("1.1", f"{r * 100:.4f} cm").correct
+    assert check("1.1", (r * 1000, "mm")).correct
+    k = RIGHT["2.1"]()
+    assert check("2.1", f"{k / 1000:.6f} N/mm").correct
+    assert check("2.1", f"{k / 1000:.6f} kN/m").correct
+    v = check("2.1", f"{k:.3f}")
+    assert not v.correct and "no unit" in v.message and "N/m" in v.hint
+    v = check("1.1", f"{r:.4f} kg")
+    assert not v.correct and "not a unit of length" in v.message
+    assert ck.quantity("2.5 m", "length") == 2.5
+    assert math.isclose(ck.quantity("90 deg", "angle"), math.pi / 2)
+
+
+GARBAGE = [None, float("nan"), float("inf"), "banana", "", True, [1, 2, 3], (1,), {"x": 1},
+           np.array([1.0, 2.0]), object(), sp.Symbol("x"), sp.Eq(sp.Symbol("k"), 1), {"crank": 1},
+           {"k": "many", "a": 1, "b": (1, 2)}, ((1, 2), (3, 4))]
+
+
+@pytest.mark.parametrize("tid", [t.id for t in tasks()])
+def test_malformed_answers_get_a_friendly_verdict(tid):
+    for g in GARBAGE:
+        v = check(tid, g)  # must not raise
+        assert isinstance(v, Verdict)
+        assert not v.correct, (tid, g)
+        assert v.score == 0
+        assert v.message and "Traceback" not in str(v)
+        assert v.hint
+
+
+def test_specific_friendly_messages():
+    assert "NaN" in check("1.1", float("nan")).message
+    assert "should have 2 items" in check("1.3", (0.7,)).message
+    assert "one number" in check("2.1", [1.0, 2.0]).message
+    assert "missing" in check("1.4", {"crank": (1.0, (0.0, 0.0))}).message
+    assert "equation" in check("1.2", sp.Eq(sp.Symbol("r_c"), sp.Symbol("r"))).message
+    assert "not in the problem" in check("1.2", "x * r").message
+    assert "pair" in check("2.2", sp.Symbol("W")).message
+    v = check("7.7", 1.0)
+    assert not v.correct and "no task" in v.message
+
+
+def test_symbolic_answers_accepted_in_any_equivalent_form():
+    m, r, ml, mc = sp.symbols("m r m_l m_c")
+    for form in ((m * r + ml * r / 2) / mc, sp.expand((m * r + ml * r / 2) / mc),
+                 r * (m + ml / 2) / mc, "r*(m + m_l/2)/m_c", (2 * m * r + ml * r) / (2 * mc)):
+        assert check("1.2", form).correct, form
+    for wrong in ((m * r + ml * r) / mc, m * r / mc, "r*(m+m_l)/(2*m_c)"):
+        assert not check("1.2", wrong).correct
+    ay, k = _lever_conditions()
+    W, l, ax, bx, by = sp.symbols("W l a_x b_x b_y")
+    assert check("2.2", {"a_y": ay, "k": k}).correct
+    assert check("2.2", (sp.factor(ay), sp.apart(sp.sympify(k), sp.Symbol("W", positive=True)))).correct
+    assert not check("2.2", (ax * bx / by, k)).correct
+    assert not check("2.2", (ay, W * l / (ax * by))).correct
+
+
+def test_symbolic_check_with_trig_identity_needs_equivalence_not_identity():
+    m, r, ml, mc, t = sp.symbols("m r m_l m_c theta")
+    form = (m * r + ml * r / 2) / mc * (sp.sin(t) ** 2 + sp.cos(t) ** 2)
+    # theta is not a symbol of the problem: friendly refusal, not a crash
+    assert "not in the problem" in check("1.2", form).message
+    form = (m * r + ml * r / 2) / mc * (sp.sin(m) ** 2 + sp.cos(m) ** 2)
+    assert check("1.2", form).correct
+
+
+@pytest.mark.parametrize("masses", [(1.0, 2.0), (2.0, 2.0), (3.0, 5.5), (6.0, 6.0)])
+def test_open_design_many_right_answers_lab1(masses):
+    ans = _lab1_counterweights(*masses)
+    v = check("1.4", ans)
+    assert v.correct, str(v)
+    assert v.score == 2
+
+
+def test_open_design_checked_by_physics_lab1():
+    ans = _lab1_counterweights(2.0, 2.0)
+    # any direction works as long as the first moment is right: rotate both counterweights' positions
+    # would unbalance; shifting one by 1 % unbalances
+    m, (x, y) = ans["crank"]
+    bad = dict(ans, crank=(m, (x * 1.01, y)))
+    v = check("1.4", bad)
+    assert not v.correct and "NOT balanced" in v.message
+    too_far = _lab1_counterweights(0.5, 2.0)  # 0.224 kg m / 0.5 kg = 0.448 m from the pivot
+    v = check("1.4", too_far)
+    assert not v.correct and "balanced" in v.message and "farther than" in v.message
+    too_heavy = _lab1_counterweights(7.0, 2.0)
+    assert "heavier" in check("1.4", too_heavy).message
+    # the design the check builds is a real balanced four-bar
+    d = ck.lab1_fourbar(ans["crank"], ans["rocker"])
+    assert d.balance_report(n=1000).balanced
+    assert np.max(d.joint_error(d.sample(200))) < 1e-12
+
+
+@pytest.mark.parametrize("free", [(0.3, 0.0, 0.2), (0.3, 0.05, 0.25), (0.25, -0.1, 0.3), (0.4, 0.0, 0.15)])
+def test_open_design_many_right_answers_lab2(free):
+    ax, bx, by = free
+    d = bl.generalized_lever(30.0, 0.6, ax, bx, by)
+    p = d.parameters
+    v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
+    assert v.correct, str(v)
+
+
+def test_open_design_lab2_constraints_and_balance():
+    d = bl.generalized_lever(30.0, 0.6, 0.1, 0.0, 0.2)  # k = 900 N/m: balanced, too stiff
+    p = d.parameters
+    v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
+    assert not v.correct and "k above" in v.message and "balanced" in v.message
+    v = check("2.4", {"k": 300.0 * 1.01, "a": (0.3, 0.0), "b": (0.0, 0.2)})
+    assert not v.correct and "NOT balanced" in v.message
+    v = check("2.4", {"k": "300 N/m", "a": ("30 cm", 0.0), "b": (0.0, "200 mm")})
+    assert v.correct
+    v = check("2.4", {"k": -5.0, "a": (0.3, 0.0), "b": (0.0, 0.2)})
+    assert not v.correct and "positive" in v.message
+
+
+def test_lab_builders_balance_exactly_when_designed():
+    d = ck.lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2))
+    rep = d.balance_report(n=1000)
+    assert rep.balanced and rep.n == 1000
+    for name in ("k",):
+        s = d.springs[0]
+        worse = d.replace(springs=[bl.Spring(s.k * (1 + 1e-3), s.free_length, s.a, s.b)])
+        assert not worse.balance_report().balanced
+
+
+def test_verdict_prints_and_is_truthy():
+    v = check("2.1", RIGHT["2.1"]())
+    assert bool(v) and repr(v) == str(v) and str(v).startswith("Task 2.1")
+    w = check("2.1", 1.0)
+    assert not bool(w) and "Hint:" in str(w)
