@@ -1,0 +1,133 @@
+"""The grader: one command grades a folder; bad notebooks get a clear row; nothing is modified."""
+import csv
+import hashlib
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+import balancelab as bl
+from balancelab.check import tasks
+from balancelab.grading import GradeRow, grade_namespace, summary, write_csv
+
+ROOT = Path(__file__).resolve().parent.parent
+
+HEADER = "import balancelab as bl\nfrom balancelab.check import check\n"
+
+
+def _nb(lab, *sources):
+    nb = nbformat.v4.new_notebook()
+    nb.metadata = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
+                   "balancelab": {"lab": lab, "version": "student"}}
+    nb.cells = [nbformat.v4.new_code_cell(s) for s in (HEADER,) + sources]
+    return nb
+
+
+def _write(folder, name, nb):
+    p = folder / name
+    p.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(nb, p)
+    return p
+
+
+K_LAMP = "k_lamp = bl.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters['k']"
+LEVER_SPRING = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
+ENERGY = "lever_energy = bl.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    sub = tmp_path_factory.mktemp("submissions")
+    _write(sub, "alice_lab2.ipynb", _nb("lab2", K_LAMP, ENERGY, LEVER_SPRING))
+    _write(sub, "bob_lab2.ipynb", _nb("lab2", "k_lamp = 12.0", "raise NotImplementedError('todo')",
+                                      "lever_spring = {'k': 310.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"))
+    _write(sub, "carol_lab2.ipynb", _nb("lab2", K_LAMP, "while True:\n    pass", ENERGY))
+    (sub / "dave_lab2.ipynb").write_text("{not json")
+    _write(sub, "erin_lab2.ipynb", _nb("lab2", K_LAMP, "import os\nos._exit(1)"))
+    _write(sub, "frank_notes.ipynb", _nb("", "x = 1"))
+    _write(sub, "group/gina_lab1.ipynb", _nb("lab1", "r_c = '22.5 cm'", "m_equivalent = (0.72, 0.48)"))
+    before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
+    out = sub.parent / "grades.csv"
+    proc = subprocess.run([sys.executable, "-m", "balancelab.grading", str(sub), "--out", str(out),
+                           "--cell-timeout", "8", "--notebook-timeout", "120"],
+                          capture_output=True, text=True, timeout=600, cwd=ROOT)
+    after = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
+    rows = {r["student"]: r for r in csv.DictReader(out.open())}
+    return proc, rows, before, after
+
+
+def test_command_succeeds_and_prints_summary(graded):
+    proc, rows, _, _ = graded
+    assert proc.returncode == 0, proc.stderr
+    assert "student" in proc.stdout and "7 notebooks" in proc.stdout
+    assert len(rows) == 7
+
+
+def test_full_marks_for_right_answers(graded):
+    _, rows, _, _ = graded
+    a = rows["alice_lab2"]
+    assert a["status"] == "graded" and a["lab"] == "lab2"
+    assert (a["2.1"], a["2.2"], a["2.3"], a["2.4"]) == ("1", "0", "1", "2")
+    assert a["total"] == "4" and a["max"] == str(int(sum(t.points for t in tasks(2))))
+
+
+def test_wrong_and_missing_answers_score_zero_with_notes(graded):
+    _, rows, _, _ = graded
+    b = rows["bob_lab2"]
+    assert b["status"] == "graded" and b["total"] == "0"
+    assert "NotImplementedError" in b["notes"]
+
+
+def test_looping_cell_is_interrupted_and_the_rest_graded(graded):
+    _, rows, _, _ = graded
+    c = rows["carol_lab2"]
+    assert c["2.1"] == "1" and c["2.3"] == "1"
+    assert "KeyboardInterrupt" in c["notes"] or "CellTimeoutError" in c["notes"] or c["status"] == "timeout"
+
+
+def test_malformed_crashing_and_unknown_notebooks_get_clear_rows(graded):
+    _, rows, _, _ = graded
+    assert rows["dave_lab2"]["status"] == "malformed" and rows["dave_lab2"]["total"] == "0"
+    assert "not a valid notebook" in rows["dave_lab2"]["notes"]
+    assert rows["erin_lab2"]["status"] in ("kernel died", "error")
+    assert rows["erin_lab2"]["total"] == "0"
+    assert rows["frank_notes"]["status"] == "unknown lab" and "--lab" in rows["frank_notes"]["notes"]
+
+
+def test_subfolders_and_other_labs(graded):
+    _, rows, _, _ = graded
+    g = rows[str(Path("group") / "gina_lab1")]
+    assert g["lab"] == "lab1" and g["1.1"] == "1" and g["1.3"] == "1" and g["1.4"] == "0"
+    assert g["2.1"] == ""  # not a task of lab 1
+
+
+def test_submissions_never_modified(graded):
+    _, _, before, after = graded
+    assert before == after
+
+
+def test_grade_namespace_directly():
+    r = grade_namespace({"k_lamp": "196.2 N/m", "lever_energy": float("nan")}, "lab2")
+    assert r["2.1"]["correct"] and r["2.1"]["score"] == 1.0
+    assert not r["2.3"]["correct"] and "NaN" in r["2.3"]["message"]
+    assert "not defined" in r["2.4"]["message"]
+    assert set(r) == {t.id for t in tasks(2)}
+
+
+def test_csv_and_summary_from_rows(tmp_path):
+    rows = [GradeRow("x", "lab2", "graded", {"2.1": 1.0, "2.2": 0.0}, {"2.1": 1.0, "2.2": 1.0}),
+            GradeRow("y", "", "malformed", notes="not a valid notebook")]
+    p = write_csv(rows, tmp_path / "g.csv")
+    text = p.read_text()
+    assert text.splitlines()[0] == "student,lab,status,total,max,2.1,2.2,notes"
+    assert "x,lab2,graded,1,2,1,0," in text
+    s = summary(rows)
+    assert "1/2" in s and "y: malformed" in s
+
+
+def test_missing_folder_is_a_clear_error(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "balancelab.grading", str(tmp_path / "nope")],
+                          capture_output=True, text=True, cwd=ROOT)
+    assert proc.returncode == 2 and "no such folder" in proc.stderr
