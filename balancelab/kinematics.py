@@ -85,6 +85,16 @@ class Kinematics:
         """Global position (a pair of sympy expressions) of a local ``point`` of ``body``."""
         raise NotImplementedError
 
+    #: bodies whose angles are the symbolic coordinates, when they are not ``q`` itself
+    symbol_bodies: tuple | None = None
+
+    def symbol_values(self, q) -> np.ndarray:
+        """Values of :meth:`symbols` in the configurations ``q``, shape ``(..., len(symbols))``."""
+        q = np.asarray(q, dtype=float)
+        if self.symbol_bodies is None:
+            return q
+        return self.poses(q)[0][..., list(self.symbol_bodies), 2]
+
 
 class ExplicitKinematics(Kinematics):
     """Kinematics given by one function that works with numpy and with sympy.
@@ -256,6 +266,7 @@ class FourBarKinematics(Kinematics):
             raise ValueError("ground pivots A and B coincide; a four-bar needs two distinct pivots")
         self.nbodies = 4
         self.names = ("theta",)
+        self.symbol_bodies = (1, 3) if symbolic == "loop" else (1, 2, 3)
         self.q_range = self._crank_range()
 
     def _assembles(self, theta):

@@ -66,6 +66,7 @@ class PeaucellierKinematics(Kinematics):
                              f"{self.l - self.s:.4g} m from O, so d > (l - s)/2")
         self.nbodies = 8
         self.names = ("phi",)
+        self.symbol_bodies = (1, 2, 3, 6, 7)
         self.phi_max = 2 * math.acos((self.l - self.s) / (2 * self.d))
         self.q_range = np.array([[-self.phi_max, self.phi_max]])
         self.line_x = (self.l ** 2 - self.s ** 2) / (2 * self.d)

@@ -94,7 +94,7 @@ def scissors_lift(a: float = 0.5, arm_mass: float = 1.0, slider_mass: float = 0.
     >>> d.parameters["k1"] == d.parameters["k2"], d.springs[1].is_zfl
     (True, True)
     >>> round(d.parameters["k1"] * d.parameters["l10"], 4)
-    225.63
+    180.504
     """
     a = _finite("a (arm length, m)", a, positive=True)
     ma = _finite("arm_mass (kg)", arm_mass, positive=True)

@@ -112,7 +112,7 @@ def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
     --------
     >>> d = serial_2r_parallelogram()
     >>> round(d.parameters["k1"], 2), round(d.parameters["k2"], 2)
-    (367.88, 61.31)
+    (183.94, 61.31)
     """
     m1, m2, l1, p1, p2, M1, M2 = _masses(m1, m2, l1, p1, p2)
     h = _finite("h (m)", h, positive=True)
@@ -405,7 +405,7 @@ def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
         raise ValueError("p_x2 must be non-zero: with W2 on the elbow, body 2 needs no springs")
     th, b1, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3)
     c, s = math.cos(th), math.sin(th)
-    hint = "choose a_x2 and a_x3 on opposite sides of the elbow, a_x2 on the side of W2"
+    hint = "choose a_x2 and a_x3 on opposite sides of the elbow"
     _positive_k("k2", k2, hint)
     _positive_k("k3", k3, hint)
     k1 = _positive_k("k1", k1, "choose another a_x2, a_x3")
@@ -439,7 +439,7 @@ def serial_2r_two_springs(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
     --------
     >>> d = serial_2r_two_springs()
     >>> len(d.springs), round(d.parameters["a_x3"], 4)
-    (2, -0.5581)
+    (2, -1.1163)
     """
     W1, W2, p1, p_x2, l = _check_loads(W1, W2, p1, p_x2, l)
     a_x2 = _finite("a_x2 (m)", a_x2)

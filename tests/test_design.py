@@ -1,0 +1,158 @@
+"""The Design contract: shapes, vectorization, reachability, reports, symbolic energy."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import balancelab as bl
+from balancelab import Joint, Load, Spring
+
+
+def test_poses_vectorized_over_any_leading_shape():
+    d = bl.serial_2r_min_preload()
+    q = d.sample(12).reshape(3, 4, 2)
+    poses = d.poses(q)
+    assert poses.shape == (3, 4, 3, 3)
+    # body 2's origin is the tip of body 1
+    tip = np.stack([1.5 * np.cos(q[..., 0]), 1.5 * np.sin(q[..., 0])], -1)
+    np.testing.assert_allclose(poses[..., 2, :2], tip, atol=1e-15)
+    np.testing.assert_allclose(poses[..., 2, 2], q[..., 1])
+    e = d.potential_energy(q)
+    assert e.total.shape == (3, 4)
+    np.testing.assert_allclose(e.total, e.load + e.spring)
+
+
+def test_one_dof_accepts_plain_angles():
+    d = bl.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    assert d.poses(np.linspace(0, 1, 7)).shape == (7, 2, 3)
+    assert d.poses(0.3).shape == (2, 3)
+    assert d.potential_energy(np.zeros((2, 5, 1))).total.shape == (2, 5)
+
+
+def test_energy_of_a_load_and_a_spring_by_hand():
+    d = bl.Design("hand", ("ground", "bar"), [Joint(0, (0, 0), 1, (0, 0))], bl.lever_kinematics(),
+                  [Load(1, (2.0, 0.0), (0.0, -3.0))], [Spring(4.0, 0.5, (0, (0.0, 1.0)), (1, (1.0, 0.0)))])
+    th = 0.7
+    y = 2 * np.sin(th)
+    length = np.hypot(np.cos(th), np.sin(th) - 1.0)
+    e = d.potential_energy(th)
+    assert e.load == pytest.approx(3.0 * y, rel=1e-15)
+    assert e.spring == pytest.approx(0.5 * 4.0 * (length - 0.5) ** 2, rel=1e-14)
+
+
+def test_unreachable_configuration_is_reported_not_wrong():
+    d = bl.singh_fourbar()
+    lo, hi = d.q_range[0]
+    with pytest.raises(bl.UnreachableConfiguration, match="cannot be reached; valid range"):
+        d.poses(hi + 0.1)
+    mask = d.reachable([lo + 0.01, hi + 0.1])
+    assert mask.tolist() == [True, False]
+    with pytest.raises(bl.UnreachableConfiguration):
+        bl.scissors_lift().potential_energy(np.pi / 2 + 0.2)
+
+
+def test_sample_is_reachable_spread_and_seeded():
+    d = bl.peaucellier_board()
+    q = d.sample(1000, seed=5)
+    assert q.shape == (1000, 1)
+    assert d.reachable(q).all()
+    lo, hi = d.q_range[0]
+    assert q.min() < lo + 0.05 * (hi - lo) and q.max() > hi - 0.05 * (hi - lo)
+    np.testing.assert_array_equal(q, d.sample(1000, seed=5))
+    with pytest.raises(ValueError, match="positive integer"):
+        d.sample(0)
+
+
+def test_report_flags_an_unbalanced_design_and_names_the_worst_configuration():
+    r = bl.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05).balance_report()
+    assert not r.balanced and r.variation > 1e-3 and r.residual > 1e-3
+    assert "NOT balanced" in str(r)
+    assert r.worst_q.shape == (1,)
+
+
+def test_report_scale_does_not_depend_on_the_origin():
+    here = bl.fourbar_counterweights()
+    far = bl.fourbar_counterweights(A=(10.0, 100.0), B=(10.7, 100.0))
+    r1, r2 = here.balance_report(), far.balance_report()
+    assert r2.scale == pytest.approx(r1.scale, rel=1e-9)
+    assert r1.balanced and r2.balanced
+    assert abs(r2.energy - r1.energy) > 100  # the energies differ, the verdict and scale do not
+
+
+def test_generalized_force_matches_the_analytic_torque():
+    d = bl.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)
+    q = np.linspace(-2, 2, 9)
+    h = 1e-7
+    num = (d.potential_energy(q + h).total - d.potential_energy(q - h).total) / (2 * h)
+    np.testing.assert_allclose(d.generalized_force(q)[:, 0], num, rtol=1e-5, atol=1e-8)
+
+
+def test_nothing_to_balance_is_an_error():
+    d = bl.Design("empty", ("ground", "bar"), [Joint(0, (0, 0), 1, (0, 0))], bl.lever_kinematics())
+    with pytest.raises(ValueError, match="nothing in this design stores energy"):
+        d.balance_report()
+
+
+def test_bad_q_shapes_and_types():
+    d = bl.serial_2r_min_preload()
+    with pytest.raises(ValueError, match=r"shape \(\.\.\., 2\)"):
+        d.poses([0.1, 0.2, 0.3])
+    with pytest.raises(TypeError, match="radians"):
+        d.poses("north")
+    with pytest.raises(ValueError, match="finite"):
+        d.poses([np.nan, 0.0])
+
+
+@pytest.mark.parametrize("bad, message", [
+    (dict(k=0.0), "stiffness k"), (dict(k=-3.0), "stiffness k"), (dict(k=np.inf), "finite"),
+    (dict(k="stiff"), "real number"), (dict(a=(0, (0.0,))), "two coordinates"),
+    (dict(b=(0, (0.0, 0.0))), "two different bodies"), (dict(realization="rubber"), "realization"),
+])
+def test_spring_validation(bad, message):
+    args = dict(k=1.0, free_length=0.0, a=(0, (0.0, 1.0)), b=(1, (1.0, 0.0)))
+    args.update(bad)
+    with pytest.raises((ValueError, TypeError), match=message):
+        Spring(**args)
+
+
+def test_weight_and_load_validation():
+    with pytest.raises(ValueError, match="mass must be > 0"):
+        bl.weight(1, (0, 0), 0.0)
+    with pytest.raises(ValueError, match="body index >= 0"):
+        Load(-1, (0, 0), (0, -1))
+    with pytest.raises(ValueError, match="load kind"):
+        Load(1, (0, 0), (0, -1), kind="magnet")
+    assert bl.weight(1, (0, 0), 2.0).mass == pytest.approx(2.0)
+
+
+def test_design_validation_names_the_bad_body():
+    with pytest.raises(ValueError, match="acts on body 5"):
+        bl.Design("x", ("ground", "bar"), [Joint(0, (0, 0), 1, (0, 0))], bl.lever_kinematics(),
+                  [Load(5, (0, 0), (0, -1))])
+    with pytest.raises(ValueError, match="kinematics describes 2 bodies"):
+        bl.Design("x", ("ground", "bar", "other"), [], bl.lever_kinematics())
+
+
+def test_symbolic_energy_of_the_lever_is_the_papers_eq1():
+    import sympy as sp
+
+    d = bl.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    W, l, ax, by, k = sp.symbols("W l a_x b_y k", positive=True)
+    th = sp.Symbol("theta", real=True)
+    eq1 = k / 2 * (ax ** 2 + by ** 2) + (W * l - k * ax * by) * sp.sin(th)
+    assert sp.simplify(d.potential_energy_symbolic() - eq1) == 0
+    assert d.balance_conditions() == [sp.Eq(W * l - ax * by * k, 0)]
+
+
+def test_trig_coefficients_vanish_for_balanced_and_not_for_unbalanced():
+    good = bl.serial_2r_simplified()
+    assert good.conditions_residual() < 1e-12
+    bad = good.replace(springs=[Spring(s.k * 1.01, 0.0, s.a, s.b, s.name) for s in good.springs])
+    assert bad.conditions_residual() > 1e-4
+
+
+def test_symbolic_derivation_is_cached():
+    d = bl.serial_2r_min_preload()
+    first = d.balance_conditions()
+    assert d.balance_conditions() == first
+    assert ("coeffs", True) in d._sym_cache
