@@ -399,25 +399,37 @@ class Design:
 
     # ----------------------------------------------------------------- energy
     def _element_energies(self, poses: np.ndarray):
-        """Energy of each load (..., L) and each spring (..., S)."""
-        if len(self.loads):
-            x, y = self._world(poses, self._lb, self._lp)
-            vl = -(self._lf[:, 0] * x + self._lf[:, 1] * y)
-        else:
-            vl = np.zeros(poses.shape[:-2] + (0,))
-        if len(self.springs):
-            ax, ay = self._world(poses, self._sab, self._sap)
-            bx, by = self._world(poses, self._sbb, self._sbp)
+        """Energy of each load and each spring: two lists of arrays of shape (...)."""
+        lead = poses.shape[:-2]
+        trig: dict = {}
+
+        def world(body, p):
+            x, y = poses[..., body, 0], poses[..., body, 1]
+            if p[0] == 0 and p[1] == 0:
+                return x, y
+            if body not in trig:
+                angle = poses[..., body, 2]
+                trig[body] = (np.cos(angle), np.sin(angle))
+            c, s = trig[body]
+            if p[1] == 0:
+                return x + c * p[0], y + s * p[0]
+            return x + c * p[0] - s * p[1], y + s * p[0] + c * p[1]
+
+        vl = []
+        for b, p, f in zip(self._lb, self._lp, self._lf):
+            x, y = world(b, p)
+            vl.append(-(f[0] * x + f[1] * y))
+        vs = []
+        for i in range(len(self.springs)):
+            ax, ay = world(self._sab[i], self._sap[i])
+            bx, by = world(self._sbb[i], self._sbp[i])
             dx, dy = bx - ax, by - ay
             d2 = dx * dx + dy * dy
-            zfl = self._sl0 == 0.0
-            if np.all(zfl):
-                vs = 0.5 * self._sk * d2
+            if self._sl0[i] == 0.0:
+                vs.append(0.5 * self._sk[i] * d2)
             else:
-                ext = np.where(zfl, 0.0, np.sqrt(d2) - self._sl0)
-                vs = 0.5 * self._sk * np.where(zfl, d2, ext * ext)
-        else:
-            vs = np.zeros(poses.shape[:-2] + (0,))
+                ext = np.sqrt(d2) - self._sl0[i]
+                vs.append(0.5 * self._sk[i] * ext * ext)
         return vl, vs
 
     def potential_energy(self, q) -> Energy:
@@ -441,8 +453,11 @@ class Design:
         >>> bool(np.ptp(e.total) < 1e-12)
         True
         """
-        vl, vs = self._element_energies(self.poses(q))
-        load, spring = vl.sum(axis=-1), vs.sum(axis=-1)
+        poses = self.poses(q)
+        vl, vs = self._element_energies(poses)
+        zero = np.zeros(poses.shape[:-2])
+        load = sum(vl[1:], vl[0]) if vl else zero
+        spring = sum(vs[1:], vs[0]) if vs else zero
         return Energy(load + spring, load, spring)
 
     def generalized_force(self, q, h: float = 1e-6) -> np.ndarray:
@@ -515,6 +530,8 @@ class Design:
         q = self.sample(n, seed) if q is None else self._as_q(q).reshape(-1, self.dof)
         poses = self.poses(q)
         vl, vs = self._element_energies(poses)
+        vl = np.stack(vl, -1) if vl else np.zeros((len(q), 0))
+        vs = np.stack(vs, -1) if vs else np.zeros((len(q), 0))
         total = vl.sum(-1) + vs.sum(-1)
         scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0))) if len(q) else 0.0
         if scale == 0.0:

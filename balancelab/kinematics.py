@@ -128,17 +128,17 @@ class ExplicitKinematics(Kinematics):
         q = np.asarray(q, dtype=float)
         lead = q.shape[:-1]
         comps = self._pose_fn(tuple(q[..., i] for i in range(self.dof)), np)
-        out = np.empty(lead + (self.nbodies, 3))
+        out = np.empty((self.nbodies, 3) + lead)
         for b, (x, y, a) in enumerate(comps):
-            out[..., b, 0] = x
-            out[..., b, 1] = y
-            out[..., b, 2] = a
-        lo, hi = self.q_range[:, 0], self.q_range[:, 1]
-        if self._open:
-            ok = np.all((q > lo) & (q < hi), axis=-1)
-        else:
-            tol = 1e-12
-            ok = np.all((q >= lo - tol) & (q <= hi + tol), axis=-1)
+            out[b, 0], out[b, 1], out[b, 2] = x, y, a
+        out = np.moveaxis(out, (0, 1), (-2, -1))
+        ok = np.ones(lead, dtype=bool)
+        tol = 0.0 if self._open else 1e-12
+        for i, (lo, hi) in enumerate(self.q_range):
+            if not self._open and hi - lo >= 2 * np.pi:
+                continue  # a full turn: every angle is reachable
+            qi = q[..., i]
+            ok &= (qi > lo - tol) & (qi < hi + tol) if self._open else (qi >= lo - tol) & (qi <= hi + tol)
         if self._valid_fn is not None:
             ok &= np.asarray(self._valid_fn(q), dtype=bool)
         return out, ok
@@ -186,18 +186,30 @@ class TreeKinematics(ExplicitKinematics):
             symbolic = lib is not np
             angles = []
             for b in range(nbodies):
-                a = 0 * q[0]
+                a = 0
                 for i in range(len(q)):
                     if A[b, i] != 0:
                         a = a + (q[i] if A[b, i] == 1 else coef(A[b, i]) * q[i])
                 if c[b] != 0:
                     a = a + (lib.nsimplify(c[b], [lib.pi]) if symbolic else c[b])
                 angles.append(a)
-            pos = {0: (0 * q[0], 0 * q[0])}
+            trig = {}
+
+            def turn(b, p):
+                if p[0] == 0 and p[1] == 0:
+                    return 0, 0
+                if not A[b].any() and c[b] == 0:  # a body that never turns (the ground)
+                    return p[0], p[1]
+                if b not in trig:
+                    trig[b] = (lib.cos(angles[b]), lib.sin(angles[b]))
+                cb, sb = trig[b]
+                return cb * p[0] - sb * p[1], sb * p[0] + cb * p[1]
+
+            pos = {0: (0, 0)}
             for parent, pp, child, pc in order:
                 ox, oy = pos[parent]
-                ax, ay = rotate(lib, angles[parent], pp)
-                bx, by = rotate(lib, angles[child], pc)
+                ax, ay = turn(parent, pp)
+                bx, by = turn(child, pc)
                 pos[child] = (ox + ax - bx, oy + ay - by)
             return [(pos[b][0], pos[b][1], angles[b]) for b in range(nbodies)]
 
