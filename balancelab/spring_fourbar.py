@@ -86,7 +86,9 @@ def _c(p) -> complex:
 
 
 def _xy(c: complex) -> tuple[float, float]:
-    return (float(c.real), float(c.imag))
+    """A complex number as a point; round-off below 1e-15 m is set to an exact zero."""
+    x, y = float(c.real), float(c.imag)
+    return (0.0 if abs(x) < 1e-15 else x, 0.0 if abs(y) < 1e-15 else y)
 
 
 def _numeric_only(lib):
@@ -331,7 +333,7 @@ def basic_balancer(k: float, length: float, anchor_distance: float, angle: float
     length = _finite("length |AD| (m)", length, positive=True)
     a = _finite("anchor_distance |AP| (m)", anchor_distance, positive=True)
     angle = _finite("angle (rad)", angle)
-    P = (a * math.cos(angle), a * math.sin(angle))
+    P = _xy(a * complex(math.cos(angle), math.sin(angle)))
     N = (-P[0], -P[1])
     kin = TreeKinematics(2, [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))], [[0.0], [1.0]], ("phi",),
                          ((-math.pi, math.pi),))
@@ -382,7 +384,7 @@ def balanced_parallelogram(k: float, a: float, b: float, angle: float = 0.0, dof
     angle = _finite("angle (rad)", angle)
     ref = "Deepak & Ananthasuresh 2012, Sec. 2.1, Figs 6-7"
     if dof == 1:
-        N = (b * math.cos(angle), b * math.sin(angle))
+        N = _xy(b * complex(math.cos(angle), math.sin(angle)))
         joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (a, 0.0), 2, (0.0, 0.0)),
                   Joint(2, (b, 0.0), 3, (a, 0.0)), Joint(3, (0.0, 0.0), 0, N)]
         kin = TreeKinematics(4, joints[:3] + [joints[3]], [[0.0], [1.0], [0.0], [1.0]], ("phi",),
