@@ -33,7 +33,8 @@ from .kinematics import FourBarKinematics
 from .lever import lever_kinematics
 
 __all__ = ["Verdict", "Task", "check", "tasks", "lab_tasks", "explain", "AnswerError",
-           "lab1_fourbar", "lab2_lever"]
+           "lab1_fourbar", "lab2_lever", "lab5_technique2", "lab6_scissors", "quantity", "vector",
+           "numeric", "numeric_vector", "symbolic", "design_balanced"]
 
 # --------------------------------------------------------------------------- verdicts
 
@@ -691,3 +692,246 @@ def _t24(answer):
             (np.hypot(*pb) <= p["anchor_max"] + 1e-12, f"anchor b farther than {p['anchor_max']} m from the pivot"),
             (np.hypot(*pa) <= p["attach_max"] + 1e-12, f"attachment a farther than {p['attach_max']} m from the pivot")]
     return design_balanced(lab2_lever(k, tuple(pa), tuple(pb)), cons)
+
+
+def _world_extent(design: Design, n: int = 300) -> np.ndarray:
+    """Bounding box ``[[xmin, ymin], [xmax, ymax]]`` (m) of every spring end over ``n`` configurations."""
+    q = design.sample(n)
+    pts = []
+    for s in design.springs:
+        for at in (s.a, s.b):
+            pts.append(design.world_points(q, [tuple(at)]).reshape(-1, 2))
+    P = np.concatenate(pts)
+    return np.array([P.min(axis=0), P.max(axis=0)])
+
+
+def _is_design(x) -> bool:
+    return isinstance(x, Design)
+
+
+# ============================================================================ lab 4
+
+#: The 2R arm of lab 4's parallelogram task (kg, m).
+LAB4_PARALLELOGRAM = dict(m1=1.2, m2=0.8, l1=0.45, p1=(0.2, 0.0), p2=(0.3, 0.0),
+                          b1=0.15, c1=0.1, b2=0.12, c2=0.1)
+#: Singh & Ananthasuresh's 2R (N, m) and the limits of lab 4's design task.
+LAB4_SINGH = dict(W1=10.0, W2=20.0, p1=(1.0, 0.5), p_x2=2.0, l=1.5, k_max=9.0, anchor_max=3.2)
+
+
+@_task("4.1", "spring rates (k1, k2) of the parallelogram 2R arm", "k_parallelogram", "numeric",
+       "a pair (k1, k2) in N/m; each accepted within 0.5 %")
+def _t41(answer):
+    from .serial import serial_2r_parallelogram
+
+    p = serial_2r_parallelogram(**LAB4_PARALLELOGRAM).parameters
+    return numeric_vector(answer, (p["k1"], p["k2"]), "stiffness", names=("k1", "k2"))
+
+
+@_task("4.2", "least possible constant energy of any balanced version of Singh's 2R", "pe_min_2r",
+       "numeric", "a number in J (loads' energy measured from the base pivot's height); within 0.5 %")
+def _t42(answer):
+    from .serial import serial_2r_min_preload
+
+    s = LAB4_SINGH
+    d = serial_2r_min_preload(s["W1"], s["W2"], s["p1"], s["p_x2"], s["l"])
+    return numeric(answer, d.parameters["PE_min"], "energy")
+
+
+def _same_loads(design: Design, ref: Design) -> bool:
+    key = lambda L: sorted((ld.body, round(ld.point[0], 9), round(ld.point[1], 9),  # noqa: E731
+                            round(ld.force[0], 9), round(ld.force[1], 9)) for ld in L)
+    if key(design.loads) != key(ref.loads) or design.dof != ref.dof:
+        return False
+    q = ref.sample(20)
+    try:
+        return bool(np.allclose(design.poses(q), ref.poses(q), atol=1e-9))
+    except Exception:
+        return False
+
+
+@_task("4.3", "minimum-preload 2R whose springs are soft and anchored close (open design)", "arm_design",
+       "design", "a balancelab Design of Singh's 2R (or a dict {'a_x': (a_x1, a_x2, a_x3)} for "
+       "serial_2r_min_preload); minimum preload (energy within 0.1 % of the least possible), every "
+       "spring at most 9 N/m, every ground anchor within 3.2 m of the base pivot; balanced to 0.1 %",
+       points=2)
+def _t43(answer):
+    from .serial import serial_2r_min_preload
+
+    s = LAB4_SINGH
+    args = (s["W1"], s["W2"], s["p1"], s["p_x2"], s["l"])
+    ref = serial_2r_min_preload(*args)
+    if _is_design(answer):
+        d = answer
+        if not _same_loads(d, ref):
+            raise _err("Your design does not carry the loads of Singh's 2R (W1 = 10 N at (1, 0.5) m, "
+                       "W2 = 20 N at 2 m, l = 1.5 m) on the same two links.",
+                       "Build it from serial_2r_min_preload(10, 20, (1.0, 0.5), 2.0, 1.5, a_x=...).")
+    else:
+        a = _as_mapping(answer, ("a_x",), "your choice")
+        ax = vector(a["a_x"], 3, "length", "a_x")
+        try:
+            d = serial_2r_min_preload(*args, a_x=tuple(ax))
+        except (ValueError, TypeError) as e:
+            raise _err(f"These free choices give no design: {e}", "Pick other values of a_x.")
+    rep = d.balance_report(n=400, tolerance=DESIGN_TOLERANCE)
+    pe_min = ref.parameters["PE_min"]
+    anchors = [at.point for sp_ in d.springs for at in (sp_.a, sp_.b) if at.body == 0]
+    cons = [(all(sp_.k <= s["k_max"] * (1 + 1e-9) for sp_ in d.springs),
+             f"a spring stiffer than {s['k_max']:g} N/m"),
+            (all(np.hypot(*p) <= s["anchor_max"] + 1e-9 for p in anchors),
+             f"a ground anchor farther than {s['anchor_max']:g} m from the base pivot"),
+            (rep.energy <= pe_min * (1 + DESIGN_TOLERANCE) + 1e-12,
+             "more preload than necessary (its constant energy is above the least possible)")]
+    return design_balanced(d, cons)
+
+
+@_task("4.4", "spring rate k1 of Lustig et al.'s case 1 by the stiffness-matrix method", "k1_lustig",
+       "numeric", "a number in N/m; accepted within 0.5 %")
+def _t44(answer):
+    from .stiffness import lustig_values
+
+    return numeric(answer, lustig_values(1)["k1"], "stiffness")
+
+
+# ============================================================================ lab 5
+
+#: Lab 5's spring-loaded four-bar (technique 2) and the box its springs must fit in (m, N/m).
+LAB5_TECHNIQUE2 = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
+
+
+def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
+    """Lab 5's spring-loaded four-bar balanced by technique 2 (Deepak & Ananthasuresh, Sec. 2.2.2).
+
+    Parameters
+    ----------
+    base : {"A", "B"}
+        Ground pivot the auxiliary parallelogram is based at.
+    h : float
+        The free length ``|WH|`` (m), > 0.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab5_technique2("A", 0.15).balance_report().balanced
+    True
+    """
+    from .spring_fourbar import example_fourbar, technique2
+
+    p = LAB5_TECHNIQUE2
+    return technique2(example_fourbar(), p["K"], p["k_l"], base, h)
+
+
+@_task("5.1", "spring rate on the crank of the lecture's four-bar with two springs", "k_crank",
+       "numeric", "a number in N/m; accepted within 0.5 %")
+def _t51(answer):
+    from .fourbar import fourbar_two_springs
+
+    return numeric(answer, fourbar_two_springs().parameters["k2"], "stiffness")
+
+
+@_task("5.2", "constant energy of Singh's four-bar balanced with minimum preload", "pe_min_fourbar",
+       "numeric", "a number in J; accepted within 0.5 %")
+def _t52(answer):
+    from .fourbar import singh_fourbar
+
+    return numeric(answer, singh_fourbar().parameters["PE_min"], "energy")
+
+
+@_task("5.3", "a technique-2 balancer whose springs fit in the box (open design)", "technique2_choice",
+       "design", "a dict {'base': 'A' or 'B', 'h': metres}; every spring at most 400 N/m and every "
+       "spring end inside -0.25 <= x <= 0.6 m, -0.35 <= y <= 0.35 m in every configuration; "
+       "balanced to 0.1 %", points=2)
+def _t53(answer):
+    a = _as_mapping(answer, ("base", "h"), "your choice")
+    if a["base"] not in ("A", "B"):
+        raise _err(f"base should be 'A' or 'B', got {a['base']!r}.", "The two ground pivots are A and B.")
+    h = quantity(a["h"], "length", "h")
+    if h <= 0:
+        raise _err("h must be positive.", "h is a length |WH| > 0.")
+    try:
+        d = lab5_technique2(a["base"], h)
+    except (ValueError, TypeError) as e:
+        raise _err(f"This choice gives no design: {e}", "Try another h.")
+    p = LAB5_TECHNIQUE2
+    lo, hi = np.array(p["box"][0]), np.array(p["box"][1])
+    ext = _world_extent(d)
+    cons = [(all(s.k <= p["k_max"] * (1 + 1e-9) for s in d.springs), f"a spring stiffer than {p['k_max']:g} N/m"),
+            (bool(np.all(ext[0] >= lo - 1e-9) and np.all(ext[1] <= hi + 1e-9)),
+             "a spring end leaves the box")]
+    return design_balanced(d, cons)
+
+
+# ============================================================================ lab 6
+
+#: Lab 6's projector lift (kg, m) and limits of its design task.
+LAB6_SCISSORS = dict(a=0.5, payload=8.0, k_max=600.0, l10_max=0.45)
+
+
+def lab6_scissors(l10: float, k1: float | None = None, k2: float | None = None) -> Design:
+    """Lab 6's projector lift with spring 1 of free length ``l10``, optionally with given rates.
+
+    Parameters
+    ----------
+    l10 : float
+        Free length of spring 1 (m), > 0.
+    k1, k2 : float, optional
+        Spring rates (N/m); by default those that balance the lift (Singh eqs 52-59).
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab6_scissors(0.42).balance_report().balanced
+    True
+    """
+    from .scissors import scissors_lift
+
+    p = LAB6_SCISSORS
+    d = scissors_lift(a=p["a"], payload=p["payload"], l10=l10)
+    if k1 is None and k2 is None:
+        return d
+    s1, s2 = d.springs
+    k1 = s1.k if k1 is None else k1
+    k2 = s2.k if k2 is None else k2
+    return d.replace(springs=[Spring(k1, s1.free_length, s1.a, s1.b, name=s1.name),
+                              Spring(k2, s2.free_length, s2.a, s2.b, name=s2.name)])
+
+
+@_task("6.1", "spring rate k1 of the projector lift with l10 = a", "k1_lift", "numeric",
+       "a number in N/m; accepted within 0.5 %")
+def _t61(answer):
+    return numeric(answer, lab6_scissors(LAB6_SCISSORS["a"]).parameters["k1"], "stiffness")
+
+
+@_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's arm for a_x1 = 0.25 m", "k1_board",
+       "numeric", "a number in N/m; accepted within 0.5 %")
+def _t62(answer):
+    from .peaucellier import peaucellier_board
+
+    return numeric(answer, peaucellier_board(a_x1=0.25).parameters["k1"], "stiffness")
+
+
+@_task("6.3", "a softer projector lift (open design)", "lift_design", "design",
+       "a dict {'l10': m, 'k1': N/m, 'k2': N/m}: spring 1's free length and both rates; "
+       "k1 and k2 at most 600 N/m, l10 at most 0.45 m; balanced to 0.1 %", points=2)
+def _t63(answer):
+    a = _as_mapping(answer, ("l10", "k1", "k2"), "your lift")
+    l10 = quantity(a["l10"], "length", "l10")
+    k1 = quantity(a["k1"], "stiffness", "k1")
+    k2 = quantity(a["k2"], "stiffness", "k2")
+    if l10 <= 0 or k1 <= 0 or k2 <= 0:
+        raise _err("l10, k1 and k2 must be positive.", "Free lengths and rates are > 0.")
+    p = LAB6_SCISSORS
+    try:
+        d = lab6_scissors(l10, k1, k2)
+    except (ValueError, TypeError) as e:
+        raise _err(f"This choice gives no lift: {e}", "Pick another l10.")
+    cons = [(k1 <= p["k_max"] * (1 + 1e-9) and k2 <= p["k_max"] * (1 + 1e-9),
+             f"a spring stiffer than {p['k_max']:g} N/m"),
+            (l10 <= p["l10_max"] + 1e-12, f"l10 longer than {p['l10_max']} m")]
+    return design_balanced(d, cons)

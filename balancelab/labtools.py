@@ -35,6 +35,10 @@ SOLUTION_TAG = "solution"
 #: The line that replaces a solution region in a code cell.
 PLACEHOLDER = 'raise NotImplementedError("your answer here: replace this line")'
 
+WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
+#: What a stored widget output says where no widget manager can show it.
+WIDGET_TEXT = "Live explorer: run the notebook to use its sliders."
+
 _ROOT = Path(__file__).resolve().parent.parent
 DEFAULT_SOLUTIONS = _ROOT / "labs" / "solutions"
 DEFAULT_STUDENT = _ROOT / "labs" / "student"
@@ -277,6 +281,11 @@ def execute_notebook(path: str | Path, timeout: int = 120, kernel_name: str = "p
                    store_widget_state=False).execute()
     for cell in nb.cells:
         cell.get("metadata", {}).pop("execution", None)
+        for out in cell.get("outputs", []):
+            data = out.get("data", {})
+            if WIDGET_MIME in data and "text/plain" in data:
+                # the widget's repr holds the rendered picture's bytes: keep the file small
+                data["text/plain"] = WIDGET_TEXT
     if write:
         nbformat.write(nb, path)
     return nb

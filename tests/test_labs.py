@@ -1,0 +1,177 @@
+"""The labs: six of them, solutions pass nbval, student versions are generated, leak nothing and run."""
+import copy
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+from balancelab import labtools
+from balancelab.check import tasks
+from balancelab.grading import grade_notebook
+
+ROOT = Path(__file__).resolve().parent.parent
+SOLUTIONS = ROOT / "labs" / "solutions"
+STUDENT = ROOT / "labs" / "student"
+SOLUTION_FILES = sorted(SOLUTIONS.glob("*.ipynb"))
+LABS = sorted({t.lab for t in tasks()})
+
+
+def _read(p):
+    return nbformat.read(p, as_version=4)
+
+
+def _lab_file(lab):
+    files = [p for p in SOLUTION_FILES if _read(p).metadata.get("balancelab", {}).get("lab") == lab]
+    assert len(files) == 1, (lab, files)
+    return files[0]
+
+
+# ------------------------------------------------------------------------- structure
+
+
+def test_every_registered_lab_has_a_solution_and_a_student_version():
+    assert len(SOLUTION_FILES) == len(LABS) >= 5
+    for lab in LABS:
+        sol = _lab_file(lab)
+        assert (STUDENT / sol.name).exists()
+        assert _read(STUDENT / sol.name).metadata["balancelab"] == {"lab": lab, "version": "student"}
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_lab_shape(lab):
+    """A goal, a live explorer, 3-6 tasks with checks, at least one open design task."""
+    nb = _read(_lab_file(lab))
+    src = "\n".join(c.source for c in nb.cells)
+    assert nb.cells[0].cell_type == "markdown" and "**Goal.**" in nb.cells[0].source
+    assert "explore(" in src and ".widget" in src
+    ts = tasks(lab)
+    assert 3 <= len(ts) <= 6
+    assert any(t.kind == "design" for t in ts)
+    for t in ts:
+        assert re.search(rf"^{re.escape(t.variable)}\s*=", src, re.M), t.variable
+        assert f'check("{t.id}", {t.variable})' in src
+        assert f"## Task {t.id}" in src
+
+
+# -------------------------------------------------------------------- student versions
+
+
+def test_committed_student_versions_are_exactly_what_the_generator_writes():
+    assert labtools.stale(SOLUTIONS, STUDENT) == []
+    for s in SOLUTION_FILES:
+        assert (STUDENT / s.name).read_text(encoding="utf-8") == labtools.student_text(s)
+    proc = subprocess.run([sys.executable, "-m", "balancelab.labtools", "check"], capture_output=True,
+                          text=True, cwd=ROOT)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+@pytest.mark.parametrize("path", SOLUTION_FILES, ids=lambda p: p.stem)
+def test_no_solution_text_survives(path):
+    sol = _read(path)
+    regions = labtools.solution_texts(sol)
+    assert len(regions) >= 2 * len(tasks(sol.metadata["balancelab"]["lab"]))  # code + prose per task
+    student = _read(STUDENT / path.name)
+    text = "\n".join(c.source for c in student.cells)
+    assert "BEGIN SOLUTION" not in text and "END SOLUTION" not in text
+    assert "**Solution.**" not in text
+    for region in regions:
+        for line in region.splitlines():
+            line = line.strip()
+            if len(line) >= 6 and re.search(r"[A-Za-z0-9]", line):
+                assert line not in text, line
+    for c in student.cells:
+        if c.cell_type == "code":
+            assert c.outputs == [] and c.execution_count is None
+    n_placeholders = text.count(labtools.PLACEHOLDER)
+    assert n_placeholders == sum(1 for c in sol.cells if c.cell_type == "code" and "# BEGIN SOLUTION" in c.source)
+
+
+def test_generator_rules():
+    v4 = nbformat.v4
+    nb = v4.new_notebook(cells=[
+        v4.new_markdown_cell("Task.\n\n<!-- BEGIN SOLUTION -->\nsecret prose\n<!-- END SOLUTION -->\n\nAfter."),
+        v4.new_markdown_cell("<!-- BEGIN SOLUTION -->only secret<!-- END SOLUTION -->"),
+        v4.new_code_cell("def f(x):\n    y = 1\n    # BEGIN SOLUTION\n    return x * secret\n    # END SOLUTION\n"
+                         "print(f)", outputs=[v4.new_output("stream", text="old")], execution_count=3),
+        v4.new_code_cell("hidden = 42", metadata={"tags": ["solution"]}),
+    ])
+    before = copy.deepcopy(nb)
+    out = labtools.student_version(nb)
+    assert nb == before  # the source is not modified
+    assert [c.cell_type for c in out.cells] == ["markdown", "code"]
+    assert out.cells[0].source == "Task.\n\nAfter."
+    assert out.cells[1].source == f"def f(x):\n    y = 1\n    {labtools.PLACEHOLDER}\nprint(f)"
+    assert out.cells[1].outputs == [] and out.cells[1].execution_count is None
+    texts = labtools.solution_texts(nb)
+    assert any("secret prose" in t for t in texts) and any("hidden = 42" in t for t in texts)
+    ns = {}
+    exec(out.cells[1].source.replace("print(f)", ""), ns)
+    with pytest.raises(NotImplementedError):
+        ns["f"](1)
+
+
+@pytest.mark.parametrize("source", [
+    "# BEGIN SOLUTION\nx = 1\n",
+    "x = 1\n# END SOLUTION\n",
+    "# BEGIN SOLUTION\n# BEGIN SOLUTION\nx = 1\n# END SOLUTION\n",
+])
+def test_generator_rejects_unbalanced_markers(source):
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(source)])
+    with pytest.raises(labtools.MarkerError, match="cell 0"):
+        labtools.student_version(nb, "broken.ipynb")
+
+
+def test_generate_and_check_commands(tmp_path):
+    src = tmp_path / "sol"
+    src.mkdir()
+    nbformat.write(_read(SOLUTION_FILES[0]), src / "a_lab.ipynb")
+    dst = tmp_path / "stu"
+    r = subprocess.run([sys.executable, "-m", "balancelab.labtools", "check", "--solutions", str(src),
+                        "--student", str(dst)], capture_output=True, text=True)
+    assert r.returncode == 1 and "stale" in r.stdout
+    r = subprocess.run([sys.executable, "-m", "balancelab.labtools", "generate", "--solutions", str(src),
+                        "--student", str(dst)], capture_output=True, text=True)
+    assert r.returncode == 0 and (dst / "a_lab.ipynb").exists()
+    assert labtools.stale(src, dst) == []
+
+
+@pytest.mark.parametrize("path", SOLUTION_FILES, ids=lambda p: p.stem)
+def test_student_version_runs_top_to_bottom_failing_only_by_not_implemented(path, tmp_path):
+    target = tmp_path / path.name
+    target.write_text((STUDENT / path.name).read_text(encoding="utf-8"), encoding="utf-8")
+    nb = labtools.execute_notebook(target, timeout=120, allow_errors=True, write=False)
+    errors = [(i, o.ename) for i, c in enumerate(nb.cells) if c.cell_type == "code"
+              for o in c.outputs if o.output_type == "error"]
+    assert errors, "a student version with nothing answered must fail its task cells"
+    assert all(name == "NotImplementedError" for _, name in errors), errors
+    task_cells = [i for i, c in enumerate(nb.cells) if c.cell_type == "code" and labtools.PLACEHOLDER in c.source]
+    assert [i for i, _ in errors] == task_cells
+
+
+# ---------------------------------------------------------------------------- nbval
+
+
+def test_solution_notebooks_pass_nbval():
+    """``pytest --nbval`` on every solution notebook, with the documented sanitization."""
+    cmd = [sys.executable, "-m", "pytest", "--nbval", "--nbval-current-env",
+           "--nbval-sanitize-with", str(ROOT / "labs" / "nbval_sanitize.cfg"),
+           "-p", "no:cacheprovider", "-q", "-o", "addopts=", *map(str, SOLUTION_FILES)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=900)
+    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-2000:]
+    assert re.search(r"\d+ passed", proc.stdout)
+    assert "failed" not in proc.stdout.splitlines()[-1]
+
+
+# ------------------------------------------------------------------------- grading
+
+
+def test_grading_solution_and_student_versions(tmp_path):
+    lab = "lab1"
+    sol = _lab_file(lab)
+    full = grade_notebook(sol, cell_timeout=120)
+    assert full.status == "graded" and full.total == full.max_total == sum(t.points for t in tasks(lab))
+    empty = grade_notebook(STUDENT / sol.name, cell_timeout=120)
+    assert empty.status == "graded" and empty.total == 0 and "NotImplementedError" in empty.notes
