@@ -141,7 +141,7 @@ def cognates(fourbar: FourBar) -> tuple[FourBar, FourBar, FourBar]:
     for (p1, p2), lens, e, th in (((B, O), c2_len, e2, ang[1]), ((O, A), c3_len, e3, ang[2])):
         fb = FourBar(p1, p2, *lens, _xy(e), 1)
         br = _branch_at(fb, float(th), E)
-        out.append(FourBar(p1, p2, *lens, _xy(e), br))
+        out.append(FourBar(p1, p2, *lens, _xy(e), br, circuit=float(th)))
     return tuple(out)
 
 
@@ -213,19 +213,7 @@ def cognate_design(fourbar: FourBar, index: int, K=None, k_l: float = 1.0) -> De
     if index not in (1, 2, 3):
         raise ValueError(f"index must be 1, 2 or 3, got {index!r}")
     cg = cognates(fourbar)[index - 1]
-    kin0 = fourbar.kinematics
-
-    def pose_fn(q, lib):
-        _numeric_only(lib)
-        st = fourbar.state(q[0])
-        a2, a3, a4 = _cognate_angles(fourbar, st)[index - 1]
-        Ac, Bc = _c(cg.A), _c(cg.B)
-        D = Ac + cg.crank * np.exp(1j * a2)
-        one = np.ones_like(q[0])
-        return [(0 * one, 0 * one, 0 * one), (Ac.real * one, Ac.imag * one, a2), (D.real, D.imag, a3),
-                (Bc.real * one, Bc.imag * one, a4)]
-
-    kin = ExplicitKinematics(4, ("theta",), kin0.q_range, pose_fn, lambda q: kin0.poses(q)[1])
+    kin = _driver(fourbar, index, cg)
     springs = []
     params = {"crank": cg.crank, "coupler": cg.coupler, "rocker": cg.rocker}
     if K is not None:
@@ -240,6 +228,23 @@ def cognate_design(fourbar: FourBar, index: int, K=None, k_l: float = 1.0) -> De
                   ("ground", "crank", "coupler", "rocker"), cg.joints(), kin, (), springs, labels=lab,
                   parameters=params, reference="Roberts-Chebyshev cognates (Deepak & Ananthasuresh 2012, "
                                                "Sec. 1.3, Fig. 3)")
+
+
+def _driver(fourbar: FourBar, index: int, cg: FourBar) -> ExplicitKinematics:
+    """Kinematics of cognate ``index``'s bodies 0-3 as functions of the given crank angle."""
+    kin0 = fourbar.kinematics
+
+    def pose_fn(q, lib):
+        _numeric_only(lib)
+        st = fourbar.state(q[0])
+        a2, a3, a4 = _cognate_angles(fourbar, st)[index - 1]
+        Ac, Bc = _c(cg.A), _c(cg.B)
+        D = Ac + cg.crank * np.exp(1j * a2)
+        one = np.ones_like(q[0])
+        return [(0 * one, 0 * one, 0 * one), (Ac.real * one, Ac.imag * one, a2), (D.real, D.imag, a3),
+                (Bc.real * one, Bc.imag * one, a4)]
+
+    return ExplicitKinematics(4, ("theta",), kin0.q_range, pose_fn, lambda q: kin0.poses(q)[1])
 
 
 def cognate_designs(fourbar: FourBar, K, k_l: float) -> tuple[Design, Design, Design]:
@@ -570,8 +575,14 @@ def kb_ratio_from_triangle(triangle, K, technique: int = 2, plagiograph_base: st
 
 
 def balance_cognates(fourbar: FourBar, K, k_l: float, technique: int = 2, plagiograph_base: str = "A",
-                     parallelogram_base: str = "A", lam: float = 0.1) -> tuple[Design, Design, Design]:
+                     parallelogram_base: str = "A", lam: float = 0.1, *, driven: bool = True
+                     ) -> tuple[Design, Design, Design]:
     """The three cognates each balanced by the same option, at the family member ``lambda``.
+
+    With ``driven=True`` every cognate is placed from the *given* four-bar's crank angle
+    (so the three designs share one coordinate and run along the whole common coupler
+    curve, switching assembly branch where they must); with ``driven=False`` each is a
+    four-bar of its own on one branch of its own crank range.
 
     Parameters
     ----------
@@ -579,11 +590,13 @@ def balance_cognates(fourbar: FourBar, K, k_l: float, technique: int = 2, plagio
         As in :func:`cognate_family`.
     lam : float
         Family parameter: ``|W_i H_i| = lambda tau_i`` (m), > 0.
+    driven : bool
+        See above.
 
     Returns
     -------
     tuple of three Design
-        Each is a four-bar of its own (its own crank angle), balanced.
+        Balanced.
 
     Examples
     --------
@@ -599,9 +612,10 @@ def balance_cognates(fourbar: FourBar, K, k_l: float, technique: int = 2, plagio
     mem = fam.member(lam)
     out = []
     for i, cg in enumerate(fam.cognates):
+        drv = _driver(fourbar, i + 1, cg) if driven else None
         if technique == 2:
-            d = technique2(cg, K, k_l, parallelogram_base, mem[i]["h"])
+            d = technique2(cg, K, k_l, parallelogram_base, mem[i]["h"], driver=drv)
         else:
-            d = technique3(cg, K, k_l, plagiograph_base, parallelogram_base, mem[i]["h"])
+            d = technique3(cg, K, k_l, plagiograph_base, parallelogram_base, mem[i]["h"], driver=drv)
         out.append(d.replace(name=f"cognate {i + 1}: " + d.name))
     return tuple(out)

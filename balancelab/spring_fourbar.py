@@ -118,6 +118,10 @@ class FourBar:
         ``E`` in the coupler's frame: origin ``D``, x-axis along ``DC`` (m).
     branch : {1, -1}
         Assembly branch, as in :class:`balancelab.FourBarKinematics`.
+    circuit : float, optional
+        A crank angle (rad) inside the interval of crank angles wanted. When the crank
+        cannot turn fully its reachable angles may form two separate intervals (two
+        circuits); by default the widest is used.
 
     Raises
     ------
@@ -138,6 +142,7 @@ class FourBar:
     rocker: float
     coupler_point: tuple
     branch: int = 1
+    circuit: float | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "A", _point("pivot A", self.A))
@@ -163,7 +168,39 @@ class FourBar:
     @cached_property
     def kinematics(self) -> FourBarKinematics:
         """The closed-form position analysis (bodies 0 ground, 1 crank, 2 coupler, 3 rocker)."""
-        return FourBarKinematics(self.A, self.B, self.crank, self.coupler, self.rocker, self.branch)
+        kin = FourBarKinematics(self.A, self.B, self.crank, self.coupler, self.rocker, self.branch)
+        if self.circuit is not None:
+            kin.q_range = self._interval_containing(float(self.circuit))
+        return kin
+
+    def _assembles(self, t):
+        jx = self.A[0] + self.crank * np.cos(t) - self.B[0]
+        jy = self.A[1] + self.crank * np.sin(t) - self.B[1]
+        D = np.hypot(jx, jy)
+        return (D <= self.coupler + self.rocker) & (D >= abs(self.coupler - self.rocker)) & (D > 0)
+
+    def _interval_containing(self, t0: float) -> np.ndarray:
+        """The interval of crank angles around ``t0`` over which the loop closes."""
+        if not self._assembles(np.array(t0)):
+            raise ValueError(f"the four-bar cannot assemble at the crank angle circuit = {t0} rad")
+        t = t0 + np.linspace(0.0, 2 * np.pi, 7201)
+        ok = self._assembles(t)
+        if ok.all():
+            return np.array([[t0 - np.pi, t0 + np.pi]])
+        ends = []
+        for sign in (1, -1):
+            tt = t0 + sign * (t - t0)
+            okk = self._assembles(tt)
+            first_bad = int(np.argmin(okk))
+            a, b = tt[first_bad - 1], tt[first_bad]
+            for _ in range(60):
+                m = 0.5 * (a + b)
+                if self._assembles(np.array(m)):
+                    a = m
+                else:
+                    b = m
+            ends.append(a)
+        return np.array([[ends[1], ends[0]]])
 
     @property
     def z(self) -> complex:
@@ -254,10 +291,11 @@ def coupler_curve(fourbar: FourBar, n: int = 721) -> np.ndarray:
 
 
 def _fourbar_design(name, fourbar: FourBar, springs, *, labels=None, parameters=None, reference="",
-                    loads=()) -> Design:
+                    loads=(), driver=None) -> Design:
     lab = fourbar.labels()
     lab.update(labels or {})
-    return Design(name, ("ground", "crank", "coupler", "rocker"), fourbar.joints(), fourbar.kinematics,
+    kin = fourbar.kinematics if driver is None else driver
+    return Design(name, ("ground", "crank", "coupler", "rocker"), fourbar.joints(), kin,
                   loads, springs, labels=lab, parameters=parameters, reference=reference)
 
 
@@ -711,7 +749,7 @@ def technique2_parameters(fourbar: FourBar, K, k_l: float, base: str = "A", h: f
     return Technique2Parameters(_xy(W), _xy(H), k_b, k_t, T, _xy(d))
 
 
-def technique2(fourbar: FourBar, K, k_l: float, base: str = "A", h: float = 0.1) -> Design:
+def technique2(fourbar: FourBar, K, k_l: float, base: str = "A", h: float = 0.1, *, driver=None) -> Design:
     """The spring-loaded four-bar balanced by technique 2: no auxiliary link, two springs.
 
     See :func:`technique2_parameters` for the equations. Springs: the load ``k_l``
@@ -722,6 +760,9 @@ def technique2(fourbar: FourBar, K, k_l: float, base: str = "A", h: float = 0.1)
     ----------
     fourbar, K, k_l, base, h
         As in :func:`technique2_parameters`.
+    driver : Kinematics, optional
+        Kinematics placing the four-bar's bodies 0-3 (by default ``fourbar.kinematics``);
+        the cognates use one driven by another cognate's crank.
 
     Returns
     -------
@@ -738,7 +779,7 @@ def technique2(fourbar: FourBar, K, k_l: float, base: str = "A", h: float = 0.1)
                Spring(p.k_b, 0.0, (0, p.H), (2, fourbar.coupler_point), name="k_b"),
                Spring(p.k_t, 0.0, (0, p.W), (2, p.T), name="k_t")]
     return _fourbar_design(
-        f"spring-loaded four-bar, technique 2 (parallelogram at {base})", fourbar, springs,
+        f"spring-loaded four-bar, technique 2 (parallelogram at {base})", fourbar, springs, driver=driver,
         labels={"K": (0, K), "H": (0, p.H), "W": (0, p.W), "T": (2, p.T)},
         parameters={"k_l": float(k_l), "k_b": p.k_b, "k_t": p.k_t, "h": float(h), "H_x": p.H[0],
                     "H_y": p.H[1]},
@@ -998,7 +1039,7 @@ def technique3_parameters(fourbar: FourBar, K, k_l: float, plagiograph_base: str
 
 
 def technique3(fourbar: FourBar, K, k_l: float, plagiograph_base: str = "A",
-               parallelogram_base: str = "A", h: float = 0.1) -> Design:
+               parallelogram_base: str = "A", h: float = 0.1, *, driver=None) -> Design:
     """The spring-loaded four-bar balanced by technique 3 (Deepak Fig. 17d / Fig. 18).
 
     Two auxiliary links complete a plagiograph: link 4 from ``U`` parallel to ``DC``
@@ -1011,6 +1052,8 @@ def technique3(fourbar: FourBar, K, k_l: float, plagiograph_base: str = "A",
     ----------
     fourbar, K, k_l, plagiograph_base, parallelogram_base, h
         As in :func:`technique3_parameters`.
+    driver : Kinematics, optional
+        As in :func:`technique2`.
 
     Returns
     -------
@@ -1024,7 +1067,7 @@ def technique3(fourbar: FourBar, K, k_l: float, plagiograph_base: str = "A",
     """
     p = technique3_parameters(fourbar, K, k_l, plagiograph_base, parallelogram_base, h)
     K = _point("K", K)
-    kin4 = fourbar.kinematics
+    kin4 = fourbar.kinematics if driver is None else driver
     UA = plagiograph_base == "A"
     U = _c(p.U)
     r3 = fourbar.coupler
@@ -1041,7 +1084,7 @@ def technique3(fourbar: FourBar, K, k_l: float, plagiograph_base: str = "A",
         out.append((S.real, S.imag, a5))
         return out
 
-    kin = ExplicitKinematics(6, ("theta",), kin4.q_range, pose_fn, lambda q: kin4.poses(q)[1])
+    kin = ExplicitKinematics(6, kin4.names, kin4.q_range, pose_fn, lambda q: kin4.poses(q)[1])
     R_on_coupler = (r3, 0.0) if UA else (0.0, 0.0)
     joints = fourbar.joints() + [Joint(0, p.U, 4, (0.0, 0.0)), Joint(4, (r3, 0.0), 5, (0.0, 0.0)),
                                  Joint(5, p.R_local, 2, R_on_coupler)]
