@@ -73,9 +73,11 @@ __all__ = [
     "stiffness_matrix_symbolic",
     "constraint_equations",
     "constraint_residuals",
+    "gravity_conditions",
     "diagonal_residual",
     "quadratic_energy",
     "solve",
+    "solve_symbolic",
     "synthesize",
     "balance_all_pairs",
     "LUSTIG_TOPOLOGY",
@@ -683,6 +685,36 @@ class _SymbolicChainKinematics(Kinematics):
         return (x + px, y + py)
 
 
+def gravity_conditions(n: int, topology) -> dict:
+    """The gravity conditions: the constraint equations of the ground row of ``K_t``.
+
+    Gravity enters ``K_t`` only through the blocks ``D_u`` that pair the constant ground
+    state ``q_1`` with each link (eqs 10-12), so exactly the ``2 n`` equations of row 1
+    carry ``g``: each says that the springs reaching the ground cancel the first moment
+    of the weights on and beyond link ``u``. The remaining conditions (rows 3, 5, ...)
+    involve springs only. The diagonal blocks carry no condition at all (see
+    :func:`diagonal_residual`).
+
+    Parameters
+    ----------
+    n : int
+        Number of moving links.
+    topology : sequence of (int, int)
+        ``(proximal body, distal body)`` of each spring.
+
+    Returns
+    -------
+    dict
+        ``{(1, col): sympy.Eq}``, a subset of :func:`constraint_equations`.
+
+    Examples
+    --------
+    >>> sorted(gravity_conditions(2, LUSTIG_TOPOLOGY))
+    [(1, 3), (1, 4), (1, 5), (1, 6)]
+    """
+    return {rc: eq for rc, eq in constraint_equations(n, topology).items() if rc[0] == 1}
+
+
 def _symbolic_parts(chain: SerialChain) -> SymbolicParts:
     _, syms, _ = _symbolic_system(chain.n, chain.topology)
     g = syms["g"]
@@ -705,48 +737,84 @@ def _is_positive_name(name: str) -> bool:
     return name[0] in _POSITIVE_PREFIX and name[1:].isdigit()
 
 
-@functools.lru_cache(maxsize=128)
-def _symbolic_solution(n: int, topology: tuple, unknowns: tuple):
-    """Generic symbolic solution(s) of the constraints for ``unknowns``, with lambdas."""
-    import sympy as sp
+class _Program:
+    """One solution branch as a sequence of small assignments, evaluated in order.
 
-    K, syms, eqs = _symbolic_system(n, topology)
+    ``steps`` is a tuple of ``(targets, exprs, args, fn)``: the unknown names a block
+    solves for, their sympy expressions in the known parameters *and the unknowns
+    solved by earlier steps* (no substitution, so nothing swells), the names ``fn``
+    takes and ``fn`` itself (lambdified with ``math``). ``free`` lists the unknowns no
+    step determines.
+    """
+
+    def __init__(self, steps, free):
+        self.steps = tuple(steps)
+        self.free = tuple(free)
+
+    def __call__(self, known: dict) -> dict:
+        env = dict(known)
+        pending = list(range(len(self.steps)))
+        while pending:
+            ready = [i for i in pending if all(a in env for a in self.steps[i][2])]
+            if not ready:
+                raise ValueError("singular choice of unknowns: the solution steps depend on each "
+                                 "other in a cycle (some unknowns are not determined)")
+            for i in ready:
+                targets, _, args, fn = self.steps[i]
+                env.update(zip(targets, fn(*[env[a] for a in args])))
+            pending = [i for i in pending if i not in ready]
+        return env
+
+    def expressions(self) -> dict:
+        """Closed-form expression of every solved unknown in the known parameters."""
+        import sympy as sp
+
+        sub: dict = {}
+        for targets, exprs, _, _ in self.steps:
+            for t, e in zip(targets, exprs):
+                sub[sp.Symbol(t, real=True)] = e
+        for _ in range(len(self.steps) + 1):
+            new = {k: v.xreplace(sub) for k, v in sub.items()}
+            if new == sub:
+                break
+            sub = new
+        return {str(k): v for k, v in sub.items()}
+
+
+@functools.lru_cache(maxsize=128)
+def _symbolic_solution(n: int, topology: tuple, unknowns: tuple) -> tuple:
+    """Generic symbolic solution branches of the constraints for ``unknowns`` (cached)."""
+    _, syms, eqs = _symbolic_system(n, topology)
     exprs = [e.lhs for e in eqs.values()]
     unk = [syms[u] for u in unknowns]
-    sols = _block_solve(exprs, unk)
-    knowns = [s for name, s in syms.items() if name not in unknowns]
-    out = []
-    for sol in sols:
-        free = [u for u, s in zip(unknowns, unk) if s not in sol or sol[s].has(*unk)]
-        exprs_u = [sol.get(s, s) for s in unk]
-        fn = None if free else sp.lambdify(knowns, exprs_u, modules="math")
-        out.append((sol, tuple(free), fn))
-    return tuple(out), tuple(str(k) for k in knowns)
+    return tuple(_block_solve(exprs, unk))
 
 
-def _block_solve(exprs, unk) -> list:
-    """Solve polynomial equations for ``unk`` block by block (sympy), all solution branches.
+def _block_solve(exprs, unk, steps=(), whole: bool = False) -> list:
+    """Solve polynomial equations for ``unk`` block by block with sympy, every branch.
 
-    The balance conditions are nearly triangular: many equations contain a single
+    The balance conditions are nearly triangular: an equation often contains a single
     unknown, or two equations (one rotation-scale block) share the same two. Solving
-    those small blocks first and substituting is much faster than one ``sympy.solve``
-    on the whole system; whatever is left is handed to ``sympy.solve`` in one piece.
-    Returns a list of dicts; an unknown missing from a dict is left free.
+    such small blocks first, then treating their unknowns as known, is far faster than
+    one ``sympy.solve`` on the whole system; whatever is left over is handed to
+    ``sympy.solve`` in one piece. Equations the remaining unknowns do not enter only
+    restrict the known values; the caller checks them with the numbers.
+
+    Returns
+    -------
+    list of _Program
     """
     import sympy as sp
 
-    exprs = [e for e in exprs if e != 0]
-    if not exprs:
-        return [{}]
     unkset = set(unk)
-    # conditions the unknowns cannot touch only restrict the known values; they are
-    # checked with the numbers by the caller
-    exprs = [e for e in exprs if e.free_symbols & unkset]
-    if not exprs:
-        return [{}]
-    has = [e.free_symbols & unkset for e in exprs]
-    block = None
+    live = [e for e in exprs if e.free_symbols & unkset]
+    if not unk or not live:
+        return [_Program(steps, [str(u) for u in unk])]
+    has = [e.free_symbols & unkset for e in live]
+    block = list(range(len(live))) if whole else None
     for i, h in enumerate(has):
+        if block is not None:
+            break
         if len(h) == 1:
             block = [i]
             break
@@ -758,24 +826,77 @@ def _block_solve(exprs, unk) -> list:
                     block = js
                     break
     if block is None:
-        block = list(range(len(exprs)))
+        block = list(range(len(live)))
     bunk = sorted(set().union(*(has[i] for i in block)), key=str)
-    sols = sp.solve([exprs[i] for i in block], bunk, dict=True, simplify=False, rational=False)
-    rest_idx = [i for i in range(len(exprs)) if i not in block]
+    sols = sp.solve([live[i] for i in block], bunk, dict=True, simplify=False, rational=False)
+    rest = [live[i] for i in range(len(live)) if i not in block]
     out = []
     for sol in sols:
-        rest = [sp.together(exprs[i].xreplace(sol)) for i in rest_idx]
-        rest = [sp.numer(r) for r in rest]
-        remaining = [u for u in unk if u not in sol]
-        for sub in _block_solve(rest, remaining) if remaining else [{}]:
-            full = {k: v.xreplace(sub) for k, v in sol.items()}
-            full.update(sub)
-            out.append(full)
+        solved = [u for u in bunk if u in sol and not (sol[u].free_symbols & set(bunk))]
+        if not solved:
+            if len(block) < len(live):  # a degenerate small block: solve everything at once
+                return _block_solve(live, unk, steps, whole=True)
+            # the conditions leave some unknowns free: infinitely many solutions
+            out.append(_Program(steps, [str(u) for u in bunk if u not in sol] or
+                                [str(u) for u in bunk]))
+            continue
+        targets = tuple(str(u) for u in solved)
+        texprs = tuple(sol[u] for u in solved)
+        args = tuple(sorted({str(a) for e in texprs for a in e.free_symbols}))
+        fn = sp.lambdify([sp.Symbol(a, real=True) for a in args], list(texprs), modules="math")
+        remaining = [u for u in unk if u not in solved]
+        # the block's own equations may still tie unsolved block unknowns together
+        again = [live[i] for i in block] if len(solved) < len(bunk) else []
+        out += _block_solve(rest + again, remaining, steps + ((targets, texprs, args, fn),))
+    return out
+
+
+def solve_symbolic(n: int, topology, unknowns: Sequence[str], *, simplify: bool = True) -> list:
+    """Closed-form solutions of the balance conditions for ``unknowns`` (sympy).
+
+    The same generic solution that :func:`solve` evaluates (cached), written out in
+    the remaining parameters. Equations the unknowns do not enter are not included;
+    they are conditions on the other parameters.
+
+    Parameters
+    ----------
+    n : int
+        Number of moving links.
+    topology : sequence of (int, int)
+        ``(proximal body, distal body)`` of each spring.
+    unknowns : sequence of str
+        Parameters to solve for.
+    simplify : bool
+        Bring every expression to a factored rational form (``sympy.factor`` of
+        ``sympy.cancel``); can be slow for long chains.
+
+    Returns
+    -------
+    list of dict
+        One dict per solution branch, ``{name: sympy expression}``.
+
+    Examples
+    --------
+    >>> sol = solve_symbolic(2, LUSTIG_TOPOLOGY, ("ax1", "ay1"))[0]
+    >>> sol["ax1"]
+    g*m2*sy2/(L2*k1)
+    """
+    n, topology = _check_topology(n, topology)
+    names = chain_parameter_names(n, topology)
+    unknowns = tuple(unknowns)
+    bad = [u for u in unknowns if u not in names]
+    if bad:
+        raise ValueError(f"unknowns {bad} are not parameters of this chain; valid names: {names}")
+    out = [p.expressions() for p in _symbolic_solution(n, topology, unknowns)]
+    if simplify:
+        import sympy as sp
+
+        out = [{k: sp.factor(sp.cancel(v)) for k, v in sol.items()} for sol in out]
     return out
 
 
 def _solve_numeric_values(n, topology, known_values: dict, unknowns: tuple):
-    """Fallback: solve with the known numbers substituted (as exact rationals)."""
+    """Fallback: solve with the known numbers substituted (floats)."""
     import sympy as sp
 
     K, syms, eqs = _symbolic_system(n, topology)
@@ -871,25 +992,33 @@ def solve(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str]
         raise ValueError(f"{len(unknowns)} unknowns but only {len(eqs)} balance conditions: the "
                          "choice is singular (underdetermined); fix some of them")
 
-    sols, known_order = _symbolic_solution(n, topology, unknowns)
     candidates = []
-    generic_failed = not sols
-    for sol, free, fn in sols:
-        if free:
-            raise ValueError(f"singular choice of unknowns: the conditions leave {list(free)} free "
-                             "(infinitely many solutions); choose fewer or other unknowns")
-        try:
-            vals = fn(*[known[k] for k in known_order])
-        except (ZeroDivisionError, ValueError, OverflowError):
-            generic_failed = True
-            continue
-        candidates.append(dict(zip(unknowns, (complex(v) for v in vals))))
-    if generic_failed and not candidates:
-        for sol in _solve_numeric_values(n, topology, known, unknowns):
-            if any(syms[u] not in sol or sol[syms[u]].free_symbols for u in unknowns):
-                raise ValueError(f"singular choice of unknowns for these values: the conditions leave "
-                                 f"some of {list(unknowns)} free (infinitely many solutions)")
-            candidates.append({u: complex(sol[syms[u]]) for u in unknowns})
+    singular = None
+    for attempt in ("generic", "numbers"):
+        programs = (_symbolic_solution(n, topology, unknowns) if attempt == "generic"
+                    else _solve_numeric_values(n, topology, known, unknowns))
+        failed = False
+        for prog in programs:
+            if prog.free:
+                singular = prog.free
+                continue
+            try:
+                env = prog(known)
+            except (ZeroDivisionError, OverflowError, TypeError):
+                failed = True  # the generic solution divides by zero for these numbers
+                continue
+            except ValueError as err:
+                if "singular" in str(err):
+                    singular = unknowns
+                    continue
+                failed = True
+                continue
+            candidates.append({u: complex(env[u]) for u in unknowns})
+        if candidates or not failed:
+            break
+    if not candidates and singular:
+        raise ValueError(f"singular choice of unknowns: the balance conditions leave {list(singular)} "
+                         "free (infinitely many solutions); choose fewer or other unknowns")
     if not candidates:
         raise ValueError(f"the balance conditions have no solution for the unknowns {list(unknowns)} "
                          "with these values (the system is overdetermined or inconsistent)")

@@ -28,6 +28,11 @@ _THREE = ("d = sm.balance_all_pairs((0.4, 0.3, 0.25), (3.0, 2.0, 1.0), ((0.2, 0.
           "sm.solve(3, ((0, 1), (0, 2), (1, 2), (0, 3), (1, 3), (2, 3)), d.parameters, "
           "tuple(f'b{c}{j}' for j in range(1, 7) for c in 'xy'))")
 
+_FOUR = ("d = sm.balance_all_pairs((0.4, 0.3, 0.25, 0.2), (3.0, 2.0, 1.0, 0.5), ((0.2, 0.0), "
+         "(0.15, 0.02), (0.1, 0.0), (0.1, 0.01)))\n"
+         "sm.solve(4, tuple((i, j) for j in range(1, 5) for i in range(j)), d.parameters, "
+         "tuple(f'b{c}{j}' for j in range(1, 11) for c in 'xy'))")
+
 
 def _median_time(fn, repeat: int = 200) -> float:
     fn()
@@ -71,6 +76,8 @@ def run() -> list[tuple[str, float, str, str]]:
     cold, warm = _cold(_THREE)
     rows.append(("symbolic derive + solve, 3 moving links, 12 unknowns, cold", cold, "s", "< 2"))
     rows.append(("same, second call (lru_cache)", warm * 1e3, "ms", "< 2"))
+    cold, warm = _cold(_FOUR)
+    rows.append(("symbolic derive + solve, 4 moving links, 20 unknowns, cold", cold, "s", "< 5"))
     return rows
 
 

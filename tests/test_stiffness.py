@@ -13,7 +13,8 @@ from balancelab import G, Spring
 from balancelab import stiffness as sm
 from balancelab.stiffness import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, InfeasibleDesign, SerialChain,
                                   balance_all_pairs, chain_parameter_names, constraint_equations,
-                                  constraint_residuals, diagonal_residual, lustig_a1, lustig_alpha,
+                                  constraint_residuals, diagonal_residual, gravity_conditions,
+                                  lustig_a1, lustig_alpha,
                                   lustig_b1, lustig_min_energy_pose, lustig_table3e_case, lustig_values,
                                   quadratic_energy, solve, spring2_invariant, stiffness_matrix,
                                   stiffness_matrix_symbolic, synthesize)
@@ -123,6 +124,31 @@ def test_constraint_count_and_block_structure(n):
     assert sp.simplify(diagonal_residual(K)) == 0
 
 
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_gravity_conditions_are_the_ground_row(n):
+    topo = _all_pairs(n)
+    eqs = constraint_equations(n, topo)
+    grav = gravity_conditions(n, topo)
+    g = sp.Symbol("g", real=True)
+    assert len(grav) == 2 * n
+    for rc, eq in eqs.items():
+        assert eq.lhs.has(g) == (rc in grav), rc
+    # with no springs, each gravity condition is a first moment of the weights
+    K, s = stiffness_matrix_symbolic(n, ())
+    for u in range(2, n + 2):
+        below = sum((s[f"m{i}"] for i in range(u + 1, n + 2)), sp.S.Zero)
+        assert sp.expand(K[0, 2 * u - 2] - g * s[f"m{u}"] * s[f"sy{u}"]) == 0
+        assert sp.expand(K[0, 2 * u - 1] - g * (s[f"m{u}"] * s[f"sx{u}"] + below * s[f"L{u}"])) == 0
+
+
+def test_docstring_examples_run():
+    import doctest
+
+    result = doctest.testmod(sm, optionflags=doctest.ELLIPSIS)
+    assert result.attempted > 20
+    assert result.failed == 0
+
+
 # ------------------------------------------------------- symbolic vs numeric, energy
 def _random_chain(rng, n, topo):
     lengths = rng.uniform(0.1, 1.0, n)
@@ -189,9 +215,9 @@ def test_case_symbolic_energy(case):
 # ----------------------------------------------------------------- eqs 18-20, Fig. 4
 def test_eq19_is_the_solution_for_b1():
     K, s = stiffness_matrix_symbolic(2, LUSTIG_TOPOLOGY)
-    sol = sm._symbolic_solution(2, LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS)[0]
-    assert len(sol) == 1
-    b = sol[0][0]
+    sols = sm.solve_symbolic(2, LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS)
+    assert len(sols) == 1
+    b = {s[k]: v for k, v in sols[0].items()}
     L2, m2, m3 = s["L2"], s["m2"], s["m3"]
     sx2, sy2, sx3, sy3 = s["sx2"], s["sy2"], s["sx3"], s["sy3"]
     den = (L2 * m3 + m2 * sx2) ** 2 + m2 ** 2 * sy2 ** 2
@@ -302,10 +328,10 @@ def test_solve_cached_symbolic_solution():
     assert after.hits == before.hits + 1 and after.misses == before.misses
 
 
-@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("n", [2, 3, 4])
 def test_symbolic_solve_agrees_with_numeric_all_pairs(n):
-    d = balance_all_pairs((0.4, 0.3, 0.25)[:n], (3.0, 2.0, 1.0)[:n], ((0.2, 0.01), (0.15, -0.02), (0.1, 0.0))[:n],
-                          stiffness=800.0)
+    d = balance_all_pairs((0.4, 0.3, 0.25, 0.2)[:n], (3.0, 2.0, 1.0, 0.5)[:n],
+                          ((0.2, 0.01), (0.15, -0.02), (0.1, 0.0), (0.1, 0.03))[:n], stiffness=800.0)
     topo = _all_pairs(n)
     unknowns = tuple(f"b{c}{j}" for j in range(1, len(topo) + 1) for c in "xy")
     sol = solve(n, topo, d.parameters, unknowns)
