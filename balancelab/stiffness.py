@@ -198,6 +198,16 @@ class SerialChain:
     def values(self, g: float = G) -> dict:
         """The chain's numbers under the paper's names (see :func:`chain_parameter_names`).
 
+        Parameters
+        ----------
+        g : float
+            Gravitational acceleration (m/s^2) stored under ``"g"``.
+
+        Returns
+        -------
+        dict of str to float
+            Lengths and attachment coordinates in m, masses in kg, stiffnesses in N/m.
+
         Examples
         --------
         >>> SerialChain((0.3,), (1.0,), ((0.1, 0.0),)).values()["L2"]
@@ -254,7 +264,13 @@ class SerialChain:
         return cls(tuple(lengths), tuple(masses), tuple(coms), tuple(springs))
 
     def stiffness_matrix(self, g: float = G) -> np.ndarray:
-        """The paper's ``K_t`` (eq. 13b); see :func:`stiffness_matrix`."""
+        """The paper's ``K_t`` (eq. 13b), shape ``(2N, 2N)``; see :func:`stiffness_matrix`.
+
+        Examples
+        --------
+        >>> SerialChain((0.3,), (1.0,), ((0.1, 0.0),)).stiffness_matrix().shape
+        (4, 4)
+        """
         return stiffness_matrix(self, g)
 
     def design(self, name: str = "serial chain with ZFL springs", *, symbolic: bool = False,

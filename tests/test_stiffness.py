@@ -503,3 +503,16 @@ def test_property_paper_topology_balanced(L2, m2, m3, sx2, sy2, sx3, sy3, ay1, k
     assert d.parameters["k1"] > 0
     assert d.balance_report(n=1000).balanced
     assert lustig_b1(v) == pytest.approx((d.parameters["bx1"], d.parameters["by1"]), rel=1e-9, abs=1e-12)
+
+
+def test_design_balance_conditions_are_eq17():
+    # the Design's own trigonometric-coefficient conditions are the same equations as the
+    # off-diagonal entries of K_t (up to sign)
+    d = lustig_table3e_case(1)
+    ours = [eq.lhs for eq in constraint_equations(2, LUSTIG_TOPOLOGY).values()]
+    theirs = [eq.lhs for eq in d.balance_conditions()]
+    for t in theirs:
+        assert any(sp.expand(t - o) == 0 or sp.expand(t + o) == 0 for o in ours), t
+    for o in ours:
+        assert any(sp.expand(t - o) == 0 or sp.expand(t + o) == 0 for t in theirs), o
+    assert d.conditions_residual() < 1e-12
