@@ -25,6 +25,9 @@ from .fourbar import (equivalent_masses, fourbar_counterweights, fourbar_joints,
                       singh_fourbar)
 from .scissors import scissors_kinematics, scissors_lift
 from .peaucellier import PeaucellierKinematics, peaucellier_board
+from . import stiffness
+from .stiffness import (InfeasibleDesign, SerialChain, balance_all_pairs, constraint_equations,
+                        lustig_table3e_case, solve, stiffness_matrix, stiffness_matrix_symbolic, synthesize)
 from .catalog import Entry, catalog
 
 __version__ = "0.1.0"
