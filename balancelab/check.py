@@ -33,7 +33,7 @@ from .kinematics import FourBarKinematics
 from .lever import lever_kinematics
 
 __all__ = ["Verdict", "Task", "check", "tasks", "lab_tasks", "explain", "AnswerError",
-           "lab1_fourbar", "lab2_lever", "lab5_technique2", "lab6_scissors", "quantity", "vector",
+           "lab1_fourbar", "lab2_lever", "lab3_torque_error", "lab5_technique2", "lab6_scissors", "quantity", "vector",
            "numeric", "numeric_vector", "symbolic", "design_balanced"]
 
 # --------------------------------------------------------------------------- verdicts
@@ -143,11 +143,12 @@ def tasks(lab: str | int | None = None) -> list[Task]:
     >>> [t.id for t in tasks(2)][:2]
     ['2.1', '2.2']
     """
+    order = sorted(_TASKS.values(), key=lambda t: tuple(int(x) for x in t.id.split(".")))
     if lab is None:
-        return list(_TASKS.values())
+        return order
     key = str(lab)
     key = key if key.startswith("lab") else "lab" + key
-    return [t for t in _TASKS.values() if t.lab == key]
+    return [t for t in order if t.lab == key]
 
 
 lab_tasks = tasks
@@ -172,7 +173,7 @@ def explain(task_id: str) -> str:
     """
     t = _TASKS.get(str(task_id))
     if t is None:
-        raise KeyError(f"no task {task_id!r}; tasks are {', '.join(_TASKS)}")
+        raise KeyError(f"no task {task_id!r}; tasks are {', '.join(t.id for t in tasks())}")
     return f"Task {t.id}: {t.title}\n  store your answer in `{t.variable}`: {t.expects}"
 
 
@@ -203,7 +204,7 @@ def check(task_id: str, answer: Any) -> Verdict:
     t = _TASKS.get(str(task_id))
     if t is None:
         return Verdict(str(task_id), False, f"There is no task {task_id!r}.",
-                       f"Tasks are: {', '.join(_TASKS)}.", 0.0, 0.0)
+                       f"Tasks are: {', '.join(t.id for t in tasks())}.", 0.0, 0.0)
     try:
         ok, message, hint = t.judge(answer)
     except AnswerError as e:
@@ -935,3 +936,94 @@ def _t63(answer):
              f"a spring stiffer than {p['k_max']:g} N/m"),
             (l10 <= p["l10_max"] + 1e-12, f"l10 longer than {p['l10_max']} m")]
     return design_balanced(d, cons)
+
+
+# ============================================================================ lab 3
+
+#: Lab 3's lever (kg, m) and its limits: torque error as a fraction of ``m g r``.
+LAB3_LEVER = dict(mass=2.0, r=0.5, b=0.3, c=0.2, pulley_error=0.01, free_length=0.1,
+                  theta_range=(-math.pi / 3, math.pi / 3), torque_error=0.03)
+
+
+def lab3_torque_error(design: Design, theta_range=None, n: int = 241) -> float:
+    """Largest ``|dV/dtheta|`` of a one-link design over a range, divided by ``m g r`` of lab 3's lever.
+
+    Parameters
+    ----------
+    design : Design
+        A lever (one degree of freedom).
+    theta_range : (float, float), optional
+        Range of the link angle (rad); lab 3's working range (+-60 deg) by default.
+    n : int
+        Number of angles.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> lab3_torque_error(lab2_lever(2 * G * 0.5 / (0.3 * 0.2), (0.2, 0.0), (0.0, 0.3), W=2 * G, l=0.5)) < 1e-9
+    True
+    """
+    p = LAB3_LEVER
+    lo, hi = p["theta_range"] if theta_range is None else theta_range
+    q = np.linspace(lo, hi, n)
+    torque = design.generalized_force(q)[..., 0]
+    return float(np.max(np.abs(torque)) / (p["mass"] * G * p["r"]))
+
+
+_PULLEY_LIMIT: list = []
+
+
+def _pulley_limit() -> float:
+    """Pulley radius (m) at which the lever's largest torque error is 1 % of ``m g r``."""
+    if not _PULLEY_LIMIT:
+        from scipy.optimize import brentq
+
+        from .realize import pulley_balance_error, pulley_lever
+
+        p = LAB3_LEVER
+        args = (p["mass"], p["r"], p["b"], p["c"])
+        f = lambda rad: (pulley_balance_error(pulley_lever(*args, radius=rad)).residual_torque  # noqa: E731
+                         / (p["mass"] * G * p["r"]) - p["pulley_error"])
+        _PULLEY_LIMIT.append(brentq(f, 1e-5, 0.05, xtol=1e-8))
+    return _PULLEY_LIMIT[0]
+
+
+@_task("3.1", "largest pulley radius for a 1 % torque error", "pulley_radius", "numeric",
+       "a number in metres (or a string like '2.8 mm'); accepted within 2 %")
+def _t31(answer):
+    return numeric(answer, _pulley_limit(), "length", rtol=0.02)
+
+
+@_task("3.2", "free length of the partner spring that makes a ZFL pair", "partner_free_length",
+       "numeric", "a number in metres (negative!); accepted within 0.5 %")
+def _t32(answer):
+    # an ordinary spring of 400 N/m and free length 50 mm, partner of 250 N/m
+    return numeric(answer, -400.0 * 0.05 / 250.0, "length")
+
+
+@_task("3.3", "an ordinary spring that balances the lever within 3 % over +-60 deg (open design)",
+       "ordinary_spring", "design",
+       "a dict {'k': N/m, 'a': (x, y) on the link, 'b': (x, y) on the ground} for a spring of free "
+       "length 0.1 m; largest torque error over -60..60 deg at most 3 % of m g r; |a|, |b| <= 0.4 m",
+       points=2)
+def _t33(answer):
+    a = _as_mapping(answer, ("k", "a", "b"), "your spring")
+    p = LAB3_LEVER
+    k = quantity(a["k"], "stiffness", "k")
+    pa, pb = point(a["a"], "a"), point(a["b"], "b")
+    if k <= 0:
+        raise _err("k must be positive.", "A spring rate is > 0 N/m.")
+    d = lab2_lever(k, tuple(pa), tuple(pb), W=p["mass"] * G, l=p["r"], free_length=p["free_length"])
+    err = lab3_torque_error(d)
+    fits = np.hypot(*pa) <= 0.4 + 1e-12 and np.hypot(*pb) <= 0.4 + 1e-12
+    ok = err <= p["torque_error"] and fits
+    msg = f"Largest torque error over the range: {100 * err:.2g} % of m g r"
+    msg += (" (at most 3 % accepted)" if err > p["torque_error"] else "")
+    if not fits:
+        msg += "; a spring end is farther than 0.4 m from the pivot"
+    hint = "" if ok else ("Start from the ZFL design and move the anchor and the rate to absorb the "
+                          "free length; plot the torque over the range.")
+    return ok, msg + ".", hint
