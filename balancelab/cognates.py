@@ -88,16 +88,15 @@ def cognate_triangle(fourbar: FourBar) -> tuple[tuple[float, float], ...]:
     return (fourbar.A, fourbar.B, _xy(A + fourbar.z * (B - A)))
 
 
-def _branch_at(fb: FourBar, theta: float, E_target: complex) -> int:
-    best, err = 1, math.inf
-    for br in (1, -1):
-        f = FourBar(fb.A, fb.B, fb.crank, fb.coupler, fb.rocker, fb.coupler_point, br)
-        st = f.state(np.array([theta]))
-        if st["ok"][0]:
-            e = abs(st["E"][0] - E_target)
-            if e < err:
-                best, err = br, e
-    return best
+def _branch_from_state(A: complex, crank_angle: float, crank: float, coupler_angle: float, B: complex) -> int:
+    """Assembly branch of a four-bar in a known configuration (as FourBarKinematics defines it).
+
+    FourBarKinematics turns the direction from the crank tip to ``B`` by ``branch * gamma``
+    (``0 <= gamma <= pi``) to get the coupler's direction.
+    """
+    J = A + crank * np.exp(1j * crank_angle)
+    turn = np.angle(np.exp(1j * coupler_angle) / (B - J))
+    return 1 if turn >= 0 else -1
 
 
 def cognates(fourbar: FourBar) -> tuple[FourBar, FourBar, FourBar]:
@@ -135,13 +134,12 @@ def cognates(fourbar: FourBar) -> tuple[FourBar, FourBar, FourBar]:
     e3 = c3_len[1] * (z - 1) / z
     lo, hi = fourbar.kinematics.q_range[0]
     qm = 0.5 * (lo + hi)
-    ang = cognate_crank_angles(fourbar, qm)
-    E = fourbar.state(np.array([qm]))["E"][0]
+    angs = _cognate_angles(fourbar, fourbar.state(np.array(qm)))
     out = [fourbar]
-    for (p1, p2), lens, e, th in (((B, O), c2_len, e2, ang[1]), ((O, A), c3_len, e3, ang[2])):
-        fb = FourBar(p1, p2, *lens, _xy(e), 1)
-        br = _branch_at(fb, float(th), E)
-        out.append(FourBar(p1, p2, *lens, _xy(e), br, circuit=float(th)))
+    for (p1, p2), lens, e, (a2, a3, _) in (((B, O), c2_len, e2, angs[1]), ((O, A), c3_len, e3, angs[2])):
+        th = float(np.angle(np.exp(1j * a2)))
+        br = _branch_from_state(_c(p1), th, lens[0], float(a3), _c(p2))
+        out.append(FourBar(p1, p2, *lens, _xy(e), br, circuit=th))
     return tuple(out)
 
 

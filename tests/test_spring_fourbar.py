@@ -342,3 +342,21 @@ def test_random_fourbars_technique1(fbk, k_l, l1, l2):
     d = sf.technique1(fb, K, k_l, l1, l2)
     assert d.balance_report(n=1000).balanced
     assert float(d.joint_error(d.sample(200)).max()) < 1e-11
+
+
+@pytest.mark.parametrize("branch", [1, -1])
+def test_fast_positions_match_the_kinematics(branch):
+    fb = sf.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, FB.coupler_point, branch)
+    q = np.linspace(*fb.kinematics.q_range[0], 1000)
+    D, C, E, ok = sf.fourbar_positions(fb, q)
+    st_ = fb.state(q)
+    assert ok.all()
+    for got, want in ((D, st_["D"]), (C, st_["C"]), (E, st_["E"])):
+        assert np.max(np.abs(got[:, 0] + 1j * got[:, 1] - want)) < 1e-12
+    assert float(sf.loop_closure_error(fb, q).max()) < 1e-14
+    # a configuration the linkage cannot reach is flagged, not silently closed
+    dr = sf.FourBar((0, 0), (0.3, 0), 0.25, 0.1, 0.1, (0.05, 0.02))  # crank cannot turn fully
+    lo, hi = dr.kinematics.q_range[0]
+    bad = hi + 0.3 if hi + 0.3 < lo + 2 * np.pi else lo - 0.3
+    assert np.isinf(sf.loop_closure_error(dr, [bad]))[0]
+    assert not sf.fourbar_positions(dr, [bad])[3][0]
