@@ -1,0 +1,80 @@
+"""Benchmarks of the course book: build times and site size.
+
+Rows (name, value, unit, target):
+
+* cold full build, every notebook executed (no cache, fresh environment): < 5 min;
+* cached rebuild after touching one chapter: < 30 s;
+* slowest chapter (execution time from the jupyter-cache records): for information;
+* total size of the site and of its largest page: < 50 MB and < 5 MB.
+
+The cold build re-executes everything, so this benchmark takes a few minutes.
+"""
+from __future__ import annotations
+
+import importlib.util
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SITE = ROOT / "_build" / "html"
+CACHE = ROOT / "_build" / ".jupyter_cache"
+TOUCHED = ROOT / "book" / "ch2_zfl_springs.md"
+
+
+def _build(*args: str) -> float:
+    t0 = time.perf_counter()
+    r = subprocess.run([sys.executable, str(ROOT / "scripts" / "build_book.py"), "--quiet", *args],
+                       cwd=ROOT, capture_output=True, text=True)
+    elapsed = time.perf_counter() - t0
+    if r.returncode != 0:
+        raise RuntimeError(f"book build failed:\n{r.stdout[-3000:]}\n{r.stderr[-3000:]}")
+    return elapsed
+
+
+def _slowest_chapter() -> tuple[str, float]:
+    from jupyter_cache import get_cache
+
+    worst = ("none", 0.0)
+    for rec in get_cache(str(CACHE)).list_cache_records():
+        t = float((rec.data or {}).get("execution_seconds", 0.0))
+        if t > worst[1]:
+            worst = (Path(rec.uri).stem, t)
+    return worst
+
+
+def _sizes() -> tuple[float, str, float]:
+    files = [p for p in SITE.rglob("*") if p.is_file()]
+    total = sum(p.stat().st_size for p in files) / 1e6
+    pages = [p for p in files if p.suffix == ".html"]
+    big = max(pages, key=lambda p: p.stat().st_size)
+    return total, str(big.relative_to(SITE)), big.stat().st_size / 1e6
+
+
+def run() -> list[tuple[str, float, str, str]]:
+    """Build the book cold, then rebuild after touching one chapter; measure the site."""
+    if CACHE.exists():
+        shutil.rmtree(CACHE)
+    cold = _build("--all")
+    chapter, slowest = _slowest_chapter()
+    original = TOUCHED.read_text()
+    try:  # a prose edit: the page is re-read, its code comes from the execution cache
+        TOUCHED.write_text(original + "\n<!-- benchmark edit -->\n")
+        warm = _build()
+    finally:
+        TOUCHED.write_text(original)
+    total, page, page_mb = _sizes()
+    return [
+        ("book: cold full build (all notebooks executed)", cold, "s", "< 300 s"),
+        (f"book: cached rebuild after editing {TOUCHED.stem}", warm, "s", "< 30 s"),
+        (f"book: slowest chapter ({chapter})", slowest, "s", "info"),
+        ("book: total site size", total, "MB", "< 50 MB"),
+        (f"book: largest page ({page})", page_mb, "MB", "< 5 MB"),
+    ]
+
+
+if __name__ == "__main__":
+    for row in run():
+        print(f"{row[0]:<60} {row[1]:10.2f} {row[2]:<3} {row[3]}")
