@@ -56,6 +56,7 @@ __all__ = [
     "cognate_family",
     "kb_ratio_from_triangle",
     "balance_cognates",
+    "catalog_entries",
 ]
 
 
@@ -617,3 +618,32 @@ def balance_cognates(fourbar: FourBar, K, k_l: float, technique: int = 2, plagio
             d = technique3(cg, K, k_l, plagiograph_base, parallelogram_base, mem[i]["h"], driver=drv)
         out.append(d.replace(name=f"cognate {i + 1}: " + d.name))
     return tuple(out)
+
+
+def catalog_entries() -> dict:
+    """Zero-argument factories: the three cognates of the example four-bar, balanced.
+
+    Each cognate carries the same load spring (``k_l = 100 N/m`` from ``K = (0.1, -0.2)``)
+    and is balanced by technique 2 based at its first pivot, at the family member
+    ``lambda = 0.1``; all three are driven by the given four-bar's crank.
+
+    Returns
+    -------
+    dict
+        Short name -> factory returning a :class:`balancelab.Design`.
+
+    Examples
+    --------
+    >>> [f().balance_report().balanced for f in catalog_entries().values()]
+    [True, True, True]
+    """
+    from .spring_fourbar import example_fourbar
+
+    def make(i):
+        def factory() -> Design:
+            return balance_cognates(example_fourbar(), (0.1, -0.2), 100.0, 2, "A", "A", 0.1)[i]
+        factory.__name__ = f"cognate_{i + 1}_example"
+        factory.__doc__ = f"Cognate {i + 1} of the example four-bar, balanced by technique 2 (Deepak Sec. 3)."
+        return factory
+
+    return {f"deepak_cognate_{i + 1}": make(i) for i in range(3)}

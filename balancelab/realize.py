@@ -39,6 +39,7 @@ __all__ = [
     "parallel_springs_lever",
     "ApproximationError",
     "approximate_lever",
+    "catalog_entries",
 ]
 
 
@@ -524,3 +525,21 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
                               "zfl_energy_variation": float(np.ptp(ez)),
                               "iterations": int(res.nit)},
                   reference="Lecture 35 (approximate balancing with regular or gas springs)")
+
+
+def catalog_entries() -> dict:
+    """Zero-argument factories of this module's worked examples.
+
+    Returns
+    -------
+    dict
+        ``pulley_lever`` (1 cm pulley), ``parallel_springs_lever`` and
+        ``approximate_lever`` (coil spring, +-60 deg), each with its defaults.
+
+    Examples
+    --------
+    >>> sorted(catalog_entries())
+    ['approximate_spring_lever', 'negative_free_length_lever', 'pulley_lever']
+    """
+    return {"pulley_lever": pulley_lever, "negative_free_length_lever": parallel_springs_lever,
+            "approximate_spring_lever": approximate_lever}

@@ -63,6 +63,7 @@ __all__ = [
     "Technique2Parameters",
     "technique1",
     "technique1_feasible",
+    "technique1_family",
     "technique2_parameters",
     "technique2",
     "technique2_family",
@@ -78,6 +79,7 @@ __all__ = [
     "watt_fourbar",
     "watt_prototype",
     "example_fourbar",
+    "catalog_entries",
 ]
 
 _BASES = ("A", "B")
@@ -973,6 +975,47 @@ def technique1_feasible(fourbar: FourBar, K, l1: float, l2: float) -> bool:
     return bool(dist.min() > abs(l1 - l2) and dist.max() < l1 + l2)
 
 
+def technique1_family(fourbar: FourBar, K, k_l: float, l1_values, l2_values) -> dict:
+    """The two-parameter family of technique 1 over a grid of ``l1``, ``l2``.
+
+    The balancing spring always has the load spring's stiffness ``k_l``; a member is
+    feasible when the auxiliary dyad assembles along the whole coupler curve
+    (``|l1 - l2| < |KE| < l1 + l2``).
+
+    Parameters
+    ----------
+    fourbar : FourBar
+    K : (float, float)
+        Load spring anchor (m).
+    k_l : float
+        Load spring stiffness (N/m), > 0.
+    l1_values, l2_values : array_like
+        Values of ``|PE|`` and ``|PK|`` (m).
+
+    Returns
+    -------
+    dict
+        ``l1``, ``l2`` (1-D), ``feasible`` (bool, shape ``(len(l1), len(l2))``), ``k_b``
+        (``k_l`` where feasible, NaN elsewhere) and the span ``KE_min``, ``KE_max`` (m).
+
+    Examples
+    --------
+    >>> f = technique1_family(example_fourbar(), (0.1, -0.2), 100.0, [0.05, 0.3], [0.05, 0.3])
+    >>> f["feasible"].tolist()
+    [[False, False], [False, True]]
+    """
+    K = _point("K (load spring anchor, m)", K)
+    k_l = _finite("k_l (N/m)", k_l, positive=True)
+    l1 = np.atleast_1d(np.asarray(l1_values, dtype=float))
+    l2 = np.atleast_1d(np.asarray(l2_values, dtype=float))
+    E = coupler_curve(fourbar, 4001)
+    dist = np.hypot(E[:, 0] - K[0], E[:, 1] - K[1])
+    L1, L2 = np.meshgrid(l1, l2, indexing="ij")
+    ok = (L1 > 0) & (L2 > 0) & (dist.min() > np.abs(L1 - L2)) & (dist.max() < L1 + L2)
+    return {"l1": l1, "l2": l2, "feasible": ok, "k_b": np.where(ok, k_l, np.nan),
+            "KE_min": float(dist.min()), "KE_max": float(dist.max())}
+
+
 def technique1(fourbar: FourBar, K, k_l: float, l1: float, l2: float, branch: int = 1) -> Design:
     """The spring-loaded four-bar balanced by technique 1 (Deepak Sec. 2.2.1, Fig. 12).
 
@@ -1094,8 +1137,10 @@ def technique3_parameters(fourbar: FourBar, K, k_l: float, plagiograph_base: str
 
     A plagiograph completed on the four-bar with base ``U`` makes the point ``G`` of an
     auxiliary link follow ``UG = m R_alpha(UE)`` (eq. 1). With base ``A``:
-    ``m = |DC|/|DE|``, ``alpha = -angle(E - D, C - D)`` (``1/z`` in complex form); with base
-    ``B``: ``m = |CD|/|CE|``, ``alpha = angle ECD`` clockwise (``1/(1 - z)``). The load
+    ``m = |DC|/|DE|`` and ``alpha`` the counter-clockwise angle that turns ``DE`` onto ``DC``
+    (``m e^{i alpha} = 1/z``); with base ``B``: ``m = |CD|/|CE|`` and ``alpha`` the angle that
+    turns ``CE`` onto ``CD`` (``m e^{i alpha} = 1/(1 - z)``; Fig. 18 calls it angle ``ECD``,
+    clockwise in its drawing). The load
     spring then has the energy of a spring ``k_l/m^2`` from ``L`` (``UL = m R_alpha(UK)``,
     eq. 5) to ``G``, which technique 2 balances with the parallelogram based at ``W``:
     ``WH = k_l/(m^2 k_b) LW`` (eq. 6), ``k_b = k_l |LW| / (m^2 |WH|)`` (eq. 7),
@@ -1531,3 +1576,48 @@ def watt_prototype(k: float = 200.0, rocker: float = 0.1, coupler: float = 0.05,
     d = technique2(fb, K, k, "A", math.hypot(*K))
     return d.replace(name="Watt straight-line four-bar, technique 2 (1:1:2 prototype)",
                      reference="Deepak & Ananthasuresh 2012, Sec. 2.3, Figs 19-20")
+
+
+# ------------------------------------------------------------------- catalog
+def catalog_entries() -> dict:
+    """Zero-argument factories of this module's worked examples, in teaching order.
+
+    All use :func:`example_fourbar` with the load spring ``k_l = 100 N/m`` anchored at
+    ``K = (0.1, -0.2)`` m (an assumed geometry).
+
+    Returns
+    -------
+    dict
+        Short name -> factory returning a :class:`balancelab.Design`.
+
+    Examples
+    --------
+    >>> entries = catalog_entries()
+    >>> entries["deepak_technique2_A"]().balance_report().balanced
+    True
+    """
+    fb, K, k = example_fourbar, (0.1, -0.2), 100.0
+
+    def make(fn, *args):
+        def factory() -> Design:
+            return fn(fb(), K, k, *args)
+        factory.__name__ = f"{fn.__name__}_example"
+        factory.__doc__ = f"{fn.__name__}{args} on the example four-bar (Deepak & Ananthasuresh 2012)."
+        return factory
+
+    out = {"deepak_spring_loaded_fourbar": make(spring_loaded_fourbar),
+           "deepak_basic_balancer": lambda: basic_balancer(50.0, 0.3, 0.2),
+           "deepak_balanced_parallelogram": lambda: balanced_parallelogram(40.0, 0.2, 0.3, dof=2),
+           "deepak_composed_springs": lambda: composed_springs_lever(30.0, (0.05, 0.2), 10.0, 0.25),
+           "deepak_plagiograph": lambda: balanced_plagiograph(0.2, 0.3, 1.5, 0.4, (0.1, -0.3), 80.0, 0.1),
+           "deepak_technique1": make(technique1, 0.3, 0.3)}
+    for base in _BASES:
+        out[f"deepak_technique2_{base}"] = make(technique2, base, 0.1)
+    for U in _BASES:
+        for W in _BASES:
+            out[f"deepak_technique3_{U}{W}"] = make(technique3, U, W, 0.1)
+    for base in _BASES:
+        out[f"deepak_herder_{base}"] = make(herder, base, 0.1)
+    out["deepak_watt_prototype"] = watt_prototype
+    out["deepak_gravity_fourbar"] = lambda: gravity_technique2(example_fourbar(), 2.0, 400.0, "A")
+    return out

@@ -360,3 +360,27 @@ def test_fast_positions_match_the_kinematics(branch):
     bad = hi + 0.3 if hi + 0.3 < lo + 2 * np.pi else lo - 0.3
     assert np.isinf(sf.loop_closure_error(dr, [bad]))[0]
     assert not sf.fourbar_positions(dr, [bad])[3][0]
+
+
+def test_technique1_family_grid():
+    l = np.array([0.05, 0.2, 0.3, 0.5])
+    f = sf.technique1_family(FB, K, KL, l, l)
+    for i, a in enumerate(l):
+        for j, b in enumerate(l):
+            assert f["feasible"][i, j] == sf.technique1_feasible(FB, K, a, b)
+            if f["feasible"][i, j]:
+                assert f["k_b"][i, j] == KL
+                assert sf.technique1(FB, K, KL, a, b).balance_report(n=1000).balanced
+            else:
+                assert np.isnan(f["k_b"][i, j])
+    assert f["feasible"].any() and not f["feasible"].all()
+
+
+def test_catalog_entries_build_balanced_designs():
+    from balancelab import cognates, realize
+
+    entries = {**sf.catalog_entries(), **cognates.catalog_entries(), **realize.catalog_entries()}
+    unbalanced = {"deepak_spring_loaded_fourbar", "approximate_spring_lever"}
+    for name, factory in entries.items():
+        d = factory()
+        assert d.balance_report(n=1000).balanced == (name not in unbalanced), name
