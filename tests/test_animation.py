@@ -1,0 +1,134 @@
+"""Animations: every catalog entry animates; embedded players are small and smooth."""
+from __future__ import annotations
+
+import base64
+import io
+import math
+import os
+import re
+
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from PIL import Image  # noqa: E402
+
+import balancelab as bl  # noqa: E402
+from balancelab.animation import animate, animate_parameter, configuration_path  # noqa: E402
+from test_plotting import ALL, build, two_link_arm  # noqa: E402
+
+FRAME_RE = re.compile(r'frames\[(\d+)\] = "data:image/png;base64,([^"]*)"')
+
+
+def _frames(html: str) -> list[bytes]:
+    return [base64.b64decode(m.group(2).replace("\\\n", "").replace("\n", ""))
+            for m in FRAME_RE.finditer(html)]
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_every_design_animates_under_2_mb_at_the_defaults(name):
+    d = build(name)
+    anim = animate(d)
+    assert anim.fps >= 20
+    assert len(anim.path) == 60
+    np.testing.assert_array_equal(anim.path, configuration_path(d, 60))
+    html = anim.to_jshtml()
+    assert len(html) < 2e6
+    frames = _frames(html)
+    assert len(frames) == len(anim.path)
+    # the player runs at >= 20 frames per second and needs no network
+    (interval,) = re.findall(r"new Animation\(frames, img_id, slider_id, ([\d.]+),", html)
+    assert 1000.0 / float(interval) >= 20
+    assert "http://" not in html and "https://" not in html
+    assert 'class="fa' not in html
+    # the last frame shows the mechanism where the path ends
+    im = Image.open(io.BytesIO(frames[-1]))
+    assert im.size == anim._fig.canvas.get_width_height()
+    np.testing.assert_allclose(anim.drawing.q, anim.path[-1])
+
+
+def test_frame_count_and_path_of_a_full_turn():
+    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    anim = animate(d, frames=24, fps=30)
+    np.testing.assert_allclose(anim.path[:, 0], -math.pi + 2 * math.pi * np.arange(24) / 24)
+    assert len(_frames(anim.to_jshtml())) == 24
+    assert anim.fps == 30
+
+
+def test_limited_range_is_swept_there_and_back():
+    d = bl.catalog()["scissors_lift"]()
+    path = configuration_path(d, 40)[:, 0]
+    lo, hi = d.q_range[0]
+    assert path.min() >= lo - 1e-12 and path.max() <= hi + 1e-12
+    assert path[0] == pytest.approx(lo, abs=1e-5) and path[20] == pytest.approx(hi, abs=1e-5)
+    np.testing.assert_allclose(path[1:20], path[39:20:-1])
+
+
+def test_two_dof_path_stays_inside_the_range_and_moves_the_marker():
+    d = two_link_arm()
+    anim = animate(d, frames=30)
+    q = anim.path
+    assert q.shape == (30, 2)
+    assert np.all(q >= d.q_range[:, 0]) and np.all(q <= d.q_range[:, 1])
+    anim.frame_image(7)
+    x, y = anim.energy.marker.get_data()
+    np.testing.assert_allclose([x[0], y[0]], np.degrees(q[7]))
+
+
+def test_frames_match_a_full_redraw():
+    d = bl.catalog()["fourbar_two_springs"]()
+    anim = animate(d, frames=10)
+    blitted = anim.frame_image(6).copy()
+    anim._fig.canvas.draw()
+    full = np.asarray(anim._fig.canvas.buffer_rgba())[..., :3]
+    assert np.mean(np.any(blitted != full, axis=-1)) < 1e-3
+
+
+def test_animate_rejects_bad_input():
+    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    with pytest.raises(ValueError, match="frames"):
+        animate(d, frames=1)
+    with pytest.raises(ValueError, match="fps"):
+        animate(d, fps=0)
+    with pytest.raises(TypeError, match="Design"):
+        animate(None)
+    scissors = bl.catalog()["scissors_lift"]()
+    with pytest.raises(bl.UnreachableConfiguration):
+        animate(scissors, path=[[0.1], [3.0]])
+
+
+def test_parameter_animation_rebuilds_each_design_and_shows_invalid_values():
+    values = [0.0, 0.1, 0.2, 0.3, -0.1]
+    anim = animate_parameter(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values, q=[0.6],
+                             unit="m")
+    assert [d is None for d in anim.designs] == [True, False, False, False, True]
+    assert anim.messages[0] == "a_x = 0 m: a_x (m) must be > 0, got 0.0"
+    html = anim.to_jshtml()
+    assert len(_frames(html)) == len(values)
+    assert len(html) < 2e6
+    # a valid frame: the spring ends at a_x along the lever, its constant is W l / (a_x b_y)
+    anim.frame_image(2)
+    (spring,) = anim.drawing.springs
+    np.testing.assert_allclose(spring.get_xydata()[-1], [0.2 * math.cos(0.6), 0.2 * math.sin(0.6)],
+                               atol=1e-12)
+    assert anim.drawing.design.springs[0].k == pytest.approx(10.0 * 0.5 / (0.2 * 0.3))
+    assert all(a.get_visible() for a in anim.drawing.artists)
+    # an invalid frame: the mechanism is hidden, the message shown
+    anim.frame_image(4)
+    assert not any(a.get_visible() for a in anim.drawing.artists)
+    texts = [t.get_text() for t in anim.drawing.ax.texts if t.get_visible()]
+    assert any("must be > 0" in t for t in texts)
+
+
+def test_parameter_animation_of_a_two_dof_family():
+    anim = animate_parameter(lambda W2: two_link_arm(W2=W2), "W2", [2.0, 5.0, 8.0])
+    assert anim.energy.image is not None
+    assert len(_frames(anim.to_jshtml())) == 3
+    assert all(d.balance_report().balanced for d in anim.designs)
+
+
+def test_parameter_animation_needs_one_valid_design():
+    with pytest.raises(ValueError, match="no value of a_x gives a valid design"):
+        animate_parameter(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", [0.0, -1.0])
+    with pytest.raises(TypeError, match="callable"):
+        animate_parameter(None, "a_x", [0.1])
