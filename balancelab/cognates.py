@@ -148,11 +148,12 @@ def _cognate_angles(fourbar: FourBar, st: dict):
     """(crank, coupler, rocker) angles of the three cognates from the given state."""
     z = fourbar.z
     th2, th3, th4 = st["th2"], st["th3"], st["th4"]
-    a1z, a1mz, amz = np.angle(1 - z), np.angle(1 - z), np.angle(-z)
-    az, azm1 = np.angle(z), np.angle(z - 1)
+    # cognate 2: crank (z - 1) v, coupler along (1 - z) w, rocker (1 - z) u
+    # cognate 3: crank z w, coupler along -z u, rocker z v
+    a_1mz, a_mz, a_z, a_zm1 = np.angle(1 - z), np.angle(-z), np.angle(z), np.angle(z - 1)
     return ((th2, th3, th4),
-            (th3 + azm1, th4 + a1mz, th2 + a1z),
-            (th4 + az, th2 + amz, th3 + az))
+            (th3 + a_zm1, th4 + a_1mz, th2 + a_1mz),
+            (th4 + a_z, th2 + a_mz, th3 + a_z))
 
 
 def cognate_crank_angles(fourbar: FourBar, q) -> np.ndarray:
