@@ -35,6 +35,7 @@ __all__ = [
     "pulley_energy",
     "PulleyError",
     "pulley_balance_error",
+    "pulley_error_curve",
     "negative_free_length_partner",
     "parallel_springs_lever",
     "ApproximationError",
@@ -280,6 +281,37 @@ def pulley_balance_error(design: Design, radius: float | None = None, n: int = 2
     torque = np.gradient(V, q)
     r, _, _ = _pulley_settings(design, radius)
     return PulleyError(r, float(np.ptp(V) / scale), float(np.max(np.abs(torque))), scale)
+
+
+def pulley_error_curve(design: Design, radii, n: int = 2001) -> dict:
+    """Balance error of a pulley-realized design as a function of the pulley radius.
+
+    Parameters
+    ----------
+    design : Design
+        As in :func:`pulley_balance_error`.
+    radii : array_like
+        Pulley radii (m), >= 0.
+    n : int
+        Configurations per radius.
+
+    Returns
+    -------
+    dict
+        ``radius`` (m), ``variation`` (relative energy variation) and
+        ``residual_torque`` (N m), arrays of the length of ``radii``; both errors tend to
+        zero (linearly) with the radius.
+
+    Examples
+    --------
+    >>> c = pulley_error_curve(pulley_lever(), [0.02, 0.01, 0.0])
+    >>> bool(c["variation"][0] > c["variation"][1] > c["variation"][2])
+    True
+    """
+    radii = np.atleast_1d(np.asarray(radii, dtype=float))
+    errs = [pulley_balance_error(design, float(r), n) for r in radii]
+    return {"radius": radii, "variation": np.array([e.variation for e in errs]),
+            "residual_torque": np.array([e.residual_torque for e in errs])}
 
 
 # ------------------------------------------------------------- negative free length

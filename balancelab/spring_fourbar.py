@@ -1549,8 +1549,9 @@ def watt_prototype(k: float = 200.0, rocker: float = 0.1, coupler: float = 0.05,
     through ``A``: eq. 3 gives ``k_b = k_l`` and eq. 4 (corrected) ``k_t = 2 k_l``, so three
     identical springs do, one of them used at half its length (twice the stiffness).
     Spring 1 shares the coupler point ``E`` with the load spring and spring 2's
-    attachment ``T`` is the mirror of ``E`` about the joint ``D``, as in the prototype.
-    The dimensions are assumed (the paper gives none).
+    attachment ``T`` is the mirror of ``E`` about the joint ``D``, as in the prototype,
+    and every spring is drawn as a string over a pulley (Fig. 20). The dimensions are
+    assumed (the paper gives none).
 
     Parameters
     ----------
@@ -1574,7 +1575,9 @@ def watt_prototype(k: float = 200.0, rocker: float = 0.1, coupler: float = 0.05,
     fb = watt_fourbar(rocker, coupler)
     K = _point("K", K)
     d = technique2(fb, K, k, "A", math.hypot(*K))
-    return d.replace(name="Watt straight-line four-bar, technique 2 (1:1:2 prototype)",
+    # the prototype realized all three ZFL springs with strings over pulleys (Fig. 20)
+    springs = [Spring(s.k, 0.0, s.a, s.b, name=s.name, realization="pulley") for s in d.springs]
+    return d.replace(name="Watt straight-line four-bar, technique 2 (1:1:2 prototype)", springs=springs,
                      reference="Deepak & Ananthasuresh 2012, Sec. 2.3, Figs 19-20")
 
 

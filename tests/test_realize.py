@@ -58,6 +58,8 @@ def test_pulley_balance_error_tends_to_zero_with_the_radius():
     assert rz.pulley_balance_error(d, 0.0).variation < 1e-12
     assert d.parameters["balance_error"] == pytest.approx(v[1], rel=1e-12)
     assert errs[0].variation > 1e-3  # a finite pulley is visibly not a ZFL spring
+    curve = rz.pulley_error_curve(d, radii)
+    assert np.allclose(curve["variation"], v, rtol=1e-12) and np.allclose(curve["residual_torque"], t)
 
 
 def test_pulley_energy_matches_design_at_zero_radius():

@@ -217,6 +217,7 @@ def test_watt_prototype_ratio_and_layout():
     assert d.springs[0].b == d.springs[1].b
     ex, ey = d.springs[0].b.point
     assert d.springs[2].b.point == (-ex, -ey)
+    assert all(s.realization == "pulley" and s.is_zfl for s in d.springs)
     # Watt's linkage: the mid-coupler point runs on a nearly straight line near the middle position
     fb = sf.watt_fourbar()
     st_ = fb.state(np.linspace(-0.15, 0.15, 101))
