@@ -213,3 +213,14 @@ def test_random_invariant_ratio(fb, kx, ky, option):
         assert ratio == pytest.approx(fam.kb_ratio, rel=1e-7)
         d = cg.balance_cognates(fb, (kx, ky), KL, t, U, W, 0.1)
         assert all(x.balance_report(n=1000).balanced for x in d)
+
+
+def test_focal_pivot_at_a_vertex_when_the_circles_touch():
+    """Sec. 3.1.4, last case: the two circles touch at A and A is the focal pivot."""
+    V = [0j, 1 + 0j, 0.3 + 0.8j]
+    eta = 0.6
+    D = [np.exp(2.2j), np.exp(-1j * eta) * (V[0] - V[1]), np.exp(-1j * eta) * (V[0] - V[2])]
+    case, P = cg.focal_pivot_circles([(v.real, v.imag) for v in V], [(d.real, d.imag) for d in D])
+    assert case == "iii" and P == pytest.approx((0.0, 0.0), abs=1e-12)
+    c, sigma, t = cg._family_solve(V, [d / abs(d) for d in D])
+    assert abs(-c / sigma) < 1e-12
