@@ -385,3 +385,29 @@ def test_catalog_entries_build_balanced_designs():
     for name, factory in entries.items():
         d = factory()
         assert d.balance_report(n=1000).balanced == (name not in unbalanced), name
+
+
+@pytest.mark.parametrize("base", ["A", "B"])
+def test_technique2_symbolic_energy_is_a_multiple_of_the_loop_equation(base):
+    """In the crank and rocker angles the energy is a constant plus a multiple of the
+    loop-closure polynomial |B + r4 e^(i t4) - A - r2 e^(i t2)|^2 - r3^2, so it is constant
+    wherever the loop closes: a symbolic proof of the balance."""
+    import sympy as sp
+
+    d = sf.technique2(FB, K, KL, base, 0.1)
+    coeffs = {str(k): float(v) for k, v in d.trig_coefficients(parametric=False).items()}
+    t2, t4 = sp.symbols("theta_2 theta_4", real=True)
+    (ax, ay), (bx, by) = FB.A, FB.B
+    r2, r3, r4 = FB.crank, FB.coupler, FB.rocker
+    loop = sp.expand((bx + r4 * sp.cos(t4) - ax - r2 * sp.cos(t2)) ** 2
+                     + (by + r4 * sp.sin(t4) - ay - r2 * sp.sin(t2)) ** 2 - r3 ** 2)
+    loop = sp.expand(loop.subs(sp.sin(t2) ** 2, 1 - sp.cos(t2) ** 2).subs(sp.sin(t4) ** 2, 1 - sp.cos(t4) ** 2))
+    lcoef = {}
+    for term in sp.Add.make_args(loop):
+        c, rest = term.as_independent(t2, t4)
+        lcoef[str(rest)] = lcoef.get(str(rest), 0.0) + float(c)
+    lam = coeffs["cos(theta_2)"] / lcoef["cos(theta_2)"]
+    for key, value in coeffs.items():
+        if key == "1":
+            continue
+        assert value == pytest.approx(lam * lcoef.get(key, 0.0), abs=1e-9 * abs(lam))
