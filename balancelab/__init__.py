@@ -31,3 +31,15 @@ from .stiffness import (InfeasibleDesign, SerialChain, balance_all_pairs, constr
 from .catalog import Entry, catalog
 
 __version__ = "0.1.0"
+
+_LAZY = ("plotting", "animation", "explore", "check", "grading", "labtools", "spring_fourbar",
+         "cognates", "realize")
+
+
+def __getattr__(name: str):
+    """Import the heavier submodules (matplotlib, ipywidgets, scipy) on first use."""
+    if name in _LAZY:
+        import importlib
+
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -30,7 +30,7 @@ class Entry:
         ``False`` for the deliberate counter-examples.
     """
 
-    def __init__(self, name: str, target: str, title: str, kwargs: dict | None = None,
+    def __init__(self, name: str, target, title: str = "", kwargs: dict | None = None,
                  expected_balanced: bool = True):
         self.name = name
         self.title = title
@@ -42,6 +42,8 @@ class Entry:
     @property
     def function(self) -> Callable[..., Design]:
         """The library function this entry calls."""
+        if callable(self._target):
+            return self._target
         module, name = self._target.rsplit(".", 1)
         return getattr(importlib.import_module(f"balancelab.{module}"), name)
 
@@ -102,6 +104,46 @@ _ENTRIES = [
           "Peaucellier-Lipkin writing board (Singh Sec. III.B: k1 = 45.88, k2 = k3 = 33.02 N/m)"),
 ]
 
+#: deliberate counter-examples among the entries other modules provide
+_NOT_BALANCED = {"deepak_spring_loaded_fourbar", "approximate_spring_lever"}
+
+
+_TITLES = {
+    "deepak_basic_balancer": "Basic spring force balancer (Deepak & Ananthasuresh, Fig. 4)",
+    "deepak_balanced_parallelogram": "Balanced parallelogram (Deepak & Ananthasuresh, Figs 6-7)",
+    "deepak_composed_springs": "Two ZFL springs composed into one (Deepak & Ananthasuresh, Sec. 2.1.1)",
+    "deepak_plagiograph": "Balanced plagiograph (Deepak & Ananthasuresh, Sec. 2.1.2, eq. 1)",
+    "deepak_gravity_fourbar": "Gravity load as the limit of a spring load (Deepak & Ananthasuresh, Sec. 4)",
+}
+
+
+def _module_entries(module: str) -> list[Entry]:
+    """Entries from a module's ``catalog_entries()`` (name -> zero-argument factory)."""
+    mod = importlib.import_module(f"balancelab.{module}")
+    out = []
+    for name, factory in mod.catalog_entries().items():
+        title = _TITLES.get(name) or (factory.__doc__ or name).strip().splitlines()[0]
+        out.append(Entry(name, factory, title, expected_balanced=name not in _NOT_BALANCED))
+    return out
+
+
+def _course_order() -> list[Entry]:
+    """Part-1 entries with the other modules' entries placed where the course meets them."""
+    names = [e.name for e in _ENTRIES]
+    at = {"realize": names.index("min_preload_lever") + 1,
+          "spring_fourbar": names.index("singh_fourbar") + 1}
+    entries = list(_ENTRIES)
+    inserted = 0
+    for module in ("realize", "spring_fourbar"):
+        extra = _module_entries(module)
+        pos = at[module] + inserted
+        entries[pos:pos] = extra
+        inserted += len(extra)
+    pos = [e.name for e in entries].index("scissors_lift")
+    entries[pos:pos] = _module_entries("cognates")
+    return entries
+
+
 def catalog() -> "OrderedDict[str, Entry]":
     """Every worked example of the course, in the order of the course.
 
@@ -117,4 +159,4 @@ def catalog() -> "OrderedDict[str, Entry]":
     >>> cat["singh_fourbar"]().balance_report().balanced
     True
     """
-    return OrderedDict((e.name, e) for e in _ENTRIES)
+    return OrderedDict((e.name, e) for e in _course_order())
