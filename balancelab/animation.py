@@ -307,8 +307,10 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     _freeze_layout(fig)
     anim = _animation_class()(fig, frame, frames=len(path), interval=1000.0 / fps, blit=False,
                               repeat=True, cache_frame_data=False)
-    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0
+    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
+    # and do not warn when such an animation is dropped without being rendered
     fig.canvas.mpl_disconnect(anim._first_draw_id)
+    anim._draw_was_started = True
     anim._frames_list = list(range(len(path)))
     anim.dynamic = lambda: drawing.artists + ([energy.marker] if energy is not None else [])
     anim.path = path
@@ -467,8 +469,10 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     _freeze_layout(fig)
     anim = _animation_class()(fig, frame, frames=len(values), interval=1000.0 / fps, blit=False,
                               repeat=True, cache_frame_data=False)
-    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0
+    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
+    # and do not warn when such an animation is dropped without being rendered
     fig.canvas.mpl_disconnect(anim._first_draw_id)
+    anim._draw_was_started = True
     anim._frames_list = list(range(len(values)))
     if show_energy and first.dof == 1:
         anim.dynamic = lambda: (drawing.artists + [note, title] + energy.artists

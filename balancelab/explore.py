@@ -382,10 +382,10 @@ class Explorer:
         vals = np.concatenate([v[np.isfinite(v)] for v in (e.load, e.spring, e.total)] + [[0.0]])
         lo, hi = float(vals.min()), float(vals.max())
         cur = previous
-        if cur is not None and lo >= cur[0] and hi <= cur[1] and (hi - lo) > 0.6 * (cur[1] - cur[0]):
+        if cur is not None and lo >= cur[0] and hi <= cur[1] and (hi - lo) > 0.15 * (cur[1] - cur[0]):
             e.ax.set_ylim(*cur)
             return False
-        pad = 0.15 * (hi - lo or 1.0)
+        pad = 0.25 * (hi - lo or 1.0)  # room to move before the next (full) redraw
         e.ylim = None
         e.ax.set_ylim(lo - pad, hi + pad)
         return True

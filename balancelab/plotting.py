@@ -690,7 +690,9 @@ class EnergyView:
     lines : dict of str to Line2D
         ``"load"``, ``"spring"``, ``"total"`` (one degree of freedom).
     image : AxesImage
-        The total-energy map (two degrees of freedom).
+        Two degrees of freedom: the map of ``(total - mean) / scale`` (``mean`` and
+        ``scale`` attributes, J), coloured over [-0.5, 0.5] for every design so a
+        balanced design is one flat colour.
     marker : Line2D
         The current configuration.
     note : Text
@@ -730,7 +732,8 @@ class EnergyView:
             extent = (x0, x1, y0, y1)
             self.image = ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto", cmap="cividis",
                                    extent=extent, interpolation="nearest")
-            self.colorbar = ax.figure.colorbar(self.image, ax=ax, label="total energy (J)")
+            self.colorbar = ax.figure.colorbar(self.image, ax=ax,
+                                               label="(total − mean) / energy scale")
             self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
                                    markerfacecolor=PALETTE["yellow"], markersize=8)
             self.worst, = ax.plot([], [], linestyle="none", marker="x", color=PALETTE["vermillion"],
@@ -802,10 +805,12 @@ class EnergyView:
         else:
             m = int(round(math.sqrt(len(grid))))
             Z = total.reshape(m, m)
-            self.image.set_data(Z)
-            centre = float(np.nanmean(Z)) if np.isfinite(Z).any() else 0.0
-            half = 0.5 * (rep.scale if rep is not None else float(np.nanmax(np.abs(Z - centre)) or 1.0))
-            self.image.set_clim(centre - half, centre + half)
+            self.mean = float(np.nanmean(Z)) if np.isfinite(Z).any() else 0.0
+            self.scale = rep.scale if rep is not None else float(np.nanmax(np.abs(Z - self.mean)) or 1.0)
+            # deviation from the mean in units of the energy scale: one fixed colour range
+            # for every design, a single flat colour when balanced
+            self.image.set_data((Z - self.mean) / self.scale)
+            self.image.set_clim(-0.5, 0.5)
             if self.residual_image is not None:
                 gf = np.full(len(grid), np.nan)
                 if ok.any():
@@ -862,9 +867,10 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     One degree of freedom: three curves against the coordinate (in degrees), the
     total flat for a balanced design; when it is not balanced the spread and the
     largest residual ``|dV/dq|`` are written and the worst configuration marked.
-    Two degrees of freedom: a map of the total energy whose colour range is the
-    design's energy scale (so a balanced design is one flat colour), and optionally a
-    map of the residual generalized force. The balance verdict is in the title.
+    Two degrees of freedom: a map of the total energy's deviation from its mean in
+    units of the design's energy scale (the sum of the spreads of every load and
+    spring energy), so a balanced design is one flat colour, and optionally a map of
+    the residual generalized force. The balance verdict is in the title.
 
     Parameters
     ----------
@@ -1052,7 +1058,7 @@ def family_plot(factory: Callable, name: str, values: Sequence[float], *, q=None
     >>> import balancelab as bl
     >>> ax1, ax2 = family_plot(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x",
     ...                        [0.1, 0.2, 0.3])
-    >>> [round(k, 2) for k in ax1.family["constants"]["k"]]
+    >>> [round(float(k), 2) for k in ax1.family["constants"]["k"]]
     [166.67, 83.33, 55.56]
     """
     if not callable(factory):
