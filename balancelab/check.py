@@ -199,7 +199,7 @@ def check(task_id: str, answer: Any) -> Verdict:
     False
     >>> print(check("1.1", float("nan")))
     Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
-      Hint: Store a plain number in metres or a string such as '0.25 m'.
+      Hint: Store a plain number in m or a string such as '2.5 m'.
     """
     t = _TASKS.get(str(task_id))
     if t is None:

@@ -324,3 +324,14 @@ def test_open_designs_labs_3_to_6_physics():
     assert "longer" in check("6.3", {"l10": 0.48, "k1": prod / 0.48, "k2": prod / 0.48}).message
     assert "NOT balanced" in check("6.3", {"l10": 0.43, "k1": prod / 0.43, "k2": 1.01 * prod / 0.43}).message
     assert ck.lab6_scissors(0.43).balance_report().balanced
+
+
+def test_docstring_examples_of_the_lab_modules_run():
+    import doctest
+
+    import balancelab.grading
+    import balancelab.labtools
+
+    for mod in (ck, balancelab.labtools, balancelab.grading):
+        result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
+        assert result.attempted > 0 and result.failed == 0, mod.__name__

@@ -1,0 +1,47 @@
+"""Speed of the labs: nbval of every solution notebook, and one answer check of each kind."""
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _best(fn, repeat: int = 3) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def run() -> list[tuple[str, float, str, str]]:
+    """Rows ``(name, measured, unit, target)``."""
+    from balancelab.check import check
+
+    rows = [
+        ("check: numeric answer (2.1)", 1e3 * _best(lambda: check("2.1", "196.2 N/m")), "ms", "< 5 ms"),
+        ("check: symbolic answer (2.2)", 1e3 * _best(lambda: check("2.2", ("-a_x*b_x/b_y",
+                                                                         "W*l*b_y/(a_x*(b_x**2+b_y**2))"))),
+         "ms", "< 2000 ms"),
+        ("check: open design (1.4, four-bar)", 1e3 * _best(lambda: check("1.4", {
+            "crank": (2.0, (-0.112, 0.0)), "rocker": (2.0, (-0.196, 0.0))})), "ms", "< 500 ms"),
+    ]
+    files = sorted(str(p) for p in (ROOT / "labs" / "solutions").glob("*.ipynb"))
+    t = time.perf_counter()
+    proc = subprocess.run([sys.executable, "-m", "pytest", "--nbval", "--nbval-current-env",
+                           "--nbval-sanitize-with", str(ROOT / "labs" / "nbval_sanitize.cfg"),
+                           "-p", "no:cacheprovider", "-q", "-o", "addopts=", *files],
+                          capture_output=True, text=True, cwd=ROOT)
+    elapsed = time.perf_counter() - t
+    name = f"nbval of {len(files)} solution notebooks" + ("" if proc.returncode == 0 else " (FAILED)")
+    rows.append((name, elapsed, "s", "< 120 s on 2 cores"))
+    return rows
+
+
+if __name__ == "__main__":
+    for row in run():
+        print(f"{row[0]:45s} {row[1]:10.3g} {row[2]:3s} {row[3]}")
