@@ -60,7 +60,7 @@ def catalog_designs() -> dict:
     return {name: factory() for name, factory in bl.catalog().items()}
 
 
-EXTRA = {"two_link_arm": two_link_arm, "pulley_lever": pulley_lever}
+EXTRA = {"extra_two_link_arm": two_link_arm, "extra_pulley_lever": pulley_lever}
 ALL = list(bl.catalog()) + list(EXTRA)
 
 
