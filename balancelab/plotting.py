@@ -333,6 +333,8 @@ class Drawing:
         Tail (the point of action) and head of each load's arrow (m); both the centre
         for a counterweight.
     labels : dict of str to matplotlib.text.Text
+    label_dots : matplotlib.collections.PathCollection or None
+        A small dot at every named point.
     extras : list
         Pulley circles and load points.
     """
@@ -425,13 +427,18 @@ class Drawing:
                                  facecolor="white", edgecolor="black", linewidths=1.2, alpha=a,
                                  zorder=7)
         self.labels = {}
-        if self.show_labels:
+        self.label_dots = None
+        if self.show_labels and design.labels:
+            n = len(design.labels)
+            self.label_dots = ax.scatter(np.zeros(n), np.zeros(n), s=6, color=STYLE["label"], alpha=a,
+                                         zorder=7.5)
             for name in design.labels:
                 t = ax.annotate(_tex_label(name), (0, 0), xytext=(5, 5), textcoords="offset points",
                                 fontsize=9, color=STYLE["label"], alpha=a, zorder=8)
                 self.labels[name] = t
         self._artists = (self.ground + list(self.links.values()) + self.springs + self.extras
-                         + self.loads + [self.joints] + list(self.labels.values()))
+                         + self.loads + [self.joints] + list(self.labels.values())
+                         + ([self.label_dots] if self.label_dots is not None else []))
         if self.set_limits:
             self._apply_limits()
         ax.set_aspect("equal", adjustable="box" if self.set_limits else "datalim")
@@ -493,6 +500,8 @@ class Drawing:
                 self.load_segments.append((p.copy(), head))
         for name, t in self.labels.items():
             t.xy = tuple(W[g.label_idx[name]])
+        if self.label_dots is not None:
+            self.label_dots.set_offsets(W[[g.label_idx[name] for name in self.labels]])
 
     def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> "Drawing":
         """Move the artists to configuration ``q`` (rad), optionally of another design.
@@ -883,9 +892,10 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     n : int, optional
         Points along the range (1 dof, default 241) or per side of the map (2 dof,
         default 61).
-    residual : bool, optional
-        Two degrees of freedom only: add the residual map on a second Axes (default:
-        when ``ax`` is not given).
+    residual : bool or matplotlib.axes.Axes, optional
+        Two degrees of freedom only: draw the map of the residual generalized force
+        ``|dV/dq| / scale`` too, on a second Axes of a new figure (``True``, the default
+        when ``ax`` is not given) or on the Axes given.
     legend : bool
         Show the legend (1 dof).
 
@@ -906,11 +916,13 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     if design.dof == 2:
         if residual is None:
             residual = ax is None
-        if residual and ax is None:
+        if hasattr(residual, "imshow"):
+            residual_ax = residual
+        elif residual and ax is None:
             plt = _plt()
             fig, (ax, residual_ax) = plt.subplots(1, 2, figsize=(9.5, 3.6), layout="constrained")
         elif residual:
-            residual_ax = ax.figure.add_subplot(1, 2, 2)
+            raise ValueError("with ax given, pass the Axes for the residual map as residual=")
     view = EnergyView(design, ax, n=n, q=q, residual_ax=residual_ax, legend=legend)
     view.ax.energy = view
     return view.ax

@@ -144,6 +144,9 @@ def test_draw_places_every_artist(name):
     # labels at their named points
     for lab, text in dr.labels.items():
         np.testing.assert_allclose(text.xy, d.world_points(q, [d.labels[lab]])[0], atol=1e-12)
+    if d.labels:
+        np.testing.assert_allclose(dr.label_dots.get_offsets(),
+                                   d.world_points(q, list(d.labels.values())), atol=1e-12)
     # ground: one hatched block per ground pivot or anchor
     assert all(r.get_hatch() for r in dr.ground)
     assert ax.get_aspect() == 1.0
@@ -346,3 +349,18 @@ def test_cognates_plot_traces_the_named_point():
     assert len(ax.patches) >= 4  # both mechanisms drawn
     with pytest.raises(ValueError, match="no point named 'E'"):
         P.cognates_plot([a], point="E")
+
+
+def test_two_dof_residual_map_is_the_generalized_force():
+    d = two_link_arm(W2=6.0).replace(name="unbalanced arm")  # same springs, other weights below
+    k = d.springs[0]
+    d = d.replace(springs=[Spring(k.k * 1.2, 0.0, k.a, k.b, "k1"), *d.springs[1:]])
+    fig, (ax1, ax2) = plt.subplots(1, 2)
+    ax = P.energy_plot(d, ax=ax1, residual=ax2, n=21)
+    view = ax.energy
+    R = np.asarray(view.residual_image.get_array()).ravel()
+    want = np.max(np.abs(d.generalized_force(view.grid)), axis=-1) / view.report.scale
+    np.testing.assert_allclose(R, want, rtol=1e-9)
+    assert not view.report.balanced and view.note.get_text().startswith("not balanced")
+    with pytest.raises(ValueError, match="residual="):
+        P.energy_plot(d, ax=ax1, residual=True)
