@@ -1103,8 +1103,14 @@ def family_plot(factory: Callable, name: str, values: Sequence[float], *, q=None
             pts = np.array(pts)
             if points is not None or np.ptp(pts, axis=0).max() > 1e-12:
                 loci[lab] = pts
-        for i, s in enumerate(first.springs):
-            consts[s.name or f"spring {i}"] = np.array([d.springs[i].k for _, d in good])
+        # spring constants by spring name (NaN where a design has no such spring)
+        for _, d in good:
+            for i, s in enumerate(d.springs):
+                consts.setdefault(s.name or f"spring {i + 1}", None)
+        for key in consts:
+            consts[key] = np.array([next((s.k for i, s in enumerate(d.springs)
+                                          if (s.name or f"spring {i + 1}") == key), np.nan)
+                                    for _, d in good])
         draw(ref[1], qq, ax=ax_l, title=f"{ref[1].name}, {name} = {ref[0]:.3g}")
         ylab = "spring constant (N/m)"
     else:

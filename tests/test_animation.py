@@ -132,3 +132,12 @@ def test_parameter_animation_needs_one_valid_design():
         animate_parameter(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", [0.0, -1.0])
     with pytest.raises(TypeError, match="callable"):
         animate_parameter(None, "a_x", [0.1])
+
+
+def test_parameter_animation_frame_for_an_unreachable_configuration():
+    # with a rocker of 0.3 m the crank cannot reach 0.2 rad: that frame says so
+    anim = animate_parameter(bl.fourbar_two_springs, "rocker", [0.6, 0.3, 2.0], q=[0.2], unit="m")
+    assert anim.designs[0] is not None and anim.messages[0] == ""
+    assert anim.designs[1] is None and "cannot be reached" in anim.messages[1]
+    assert anim.designs[2] is None and "cannot assemble" in anim.messages[2]
+    assert len(_frames(anim.to_jshtml())) == 3

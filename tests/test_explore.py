@@ -135,7 +135,6 @@ def test_exploring_a_design_scales_its_springs():
 
 
 def test_widget_sliders_drive_the_callback():
-    pytest.importorskip("ipywidgets")
     ex = explore(bl.fourbar_two_springs, {"rocker": (0.2, 2.0, 0.05)})
     box = ex.widget
     rocker, theta = ex._sliders["rocker"], ex._q_sliders["theta"]

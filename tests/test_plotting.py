@@ -323,6 +323,18 @@ def test_family_plot_of_designs():
     assert len(ax2.lines) == 1
 
 
+def test_family_plot_with_springs_that_come_and_go():
+    def factory(n):
+        d = bl.single_link_spring(2.0, 0.5, 0.3, 0.2)
+        if n < 1:
+            return d.replace(springs=[])  # a bare link: nothing named k
+        return d
+
+    ax1, ax2 = P.family_plot(lambda n: factory(n), "n", [0, 1], q=[0.3])
+    k = ax1.family["constants"]["k"]
+    assert np.isnan(k[0]) and k[1] == pytest.approx(2.0 * G * 0.5 / (0.3 * 0.2))
+
+
 def test_family_plot_of_dicts_and_errors():
     def family(h):
         if h <= 0:
