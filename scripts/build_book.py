@@ -15,7 +15,7 @@ exact versions; npm checks each tarball's integrity) and unpacked into the git-i
 from __future__ import annotations
 
 import argparse
-import io
+import os
 import shutil
 import subprocess
 import sys
@@ -134,6 +134,9 @@ def build(force: bool = False, all_pages: bool = False, quiet: bool = False, toc
         When the build fails (a cell raised, a warning was emitted ...).
     """
     fetch_assets()
+    # The kernels inherit this process's environment: a non-interactive MPLBACKEND (test suites
+    # set Agg) would stop matplotlib's inline backend, and every figure would vanish from the pages.
+    os.environ.pop("MPLBACKEND", None)
     from jupyter_book.sphinx import build_sphinx
 
     # What `jb build . -W -n --keep-going` passes, plus forced execution when asked.

@@ -141,7 +141,8 @@ def test_a_cell_that_raises_fails_the_build(tmp_path):
         ```
         """)
     assert r.returncode != 0
-    assert "a broken chapter" in r.stdout + r.stderr
+    out = r.stdout + r.stderr
+    assert "a broken chapter" in out
 
 
 def test_a_broken_reference_fails_the_build(tmp_path):
