@@ -19,7 +19,7 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
-from .design import Design, UnreachableConfiguration
+from .design import Design
 from .plotting import Drawing, EnergyView, _check_design, _extent, _Geometry, default_q
 
 __all__ = ["animate", "animate_parameter", "configuration_path"]

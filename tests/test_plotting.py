@@ -55,11 +55,6 @@ def pulley_lever() -> bl.Design:
                      springs=[Spring(s.k, 0.0, s.a, s.b, name="k", realization="pulley")])
 
 
-def catalog_designs() -> dict:
-    """Every catalog entry built, plus the designs this module adds."""
-    return {name: factory() for name, factory in bl.catalog().items()}
-
-
 EXTRA = {"extra_two_link_arm": two_link_arm, "extra_pulley_lever": pulley_lever}
 ALL = list(bl.catalog()) + list(EXTRA)
 
