@@ -371,3 +371,14 @@ def test_two_dof_residual_map_is_the_generalized_force():
     assert not view.report.balanced and view.note.get_text().startswith("not balanced")
     with pytest.raises(ValueError, match="residual="):
         P.energy_plot(d, ax=ax1, residual=True)
+
+
+def test_the_three_catalog_cognates_trace_one_coupler_curve():
+    cat = bl.catalog()
+    designs = [cat[f"deepak_cognate_{i}"]() for i in (1, 2, 3)]
+    ax = P.cognates_plot(designs, point="E", n=181)
+    first = ax.curves[0]
+    assert len(first) > 100
+    for curve in ax.curves[1:]:  # driven by the same crank angle: the same points, in order
+        np.testing.assert_allclose(curve, first, atol=1e-9)
+    assert len(ax.get_legend().get_texts()) == 3
