@@ -36,10 +36,17 @@ _LAZY = ("plotting", "animation", "explore", "check", "grading", "labtools", "sp
          "cognates", "realize")
 
 
+_LAZY_NAMES = {"draw": "plotting", "energy_plot": "plotting", "lever_valley": "plotting",
+               "family_plot": "plotting", "cognates_plot": "plotting", "animate": "animation",
+               "animate_parameter": "animation", "explore": "explore", "Explorer": "explore"}
+
+
 def __getattr__(name: str):
     """Import the heavier submodules (matplotlib, ipywidgets, scipy) on first use."""
-    if name in _LAZY:
-        import importlib
+    import importlib
 
+    if name in _LAZY:
         return importlib.import_module(f"{__name__}.{name}")
+    if name in _LAZY_NAMES:
+        return getattr(importlib.import_module(f"{__name__}.{_LAZY_NAMES[name]}"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
