@@ -38,7 +38,7 @@ _LAZY = ("plotting", "animation", "explore", "check", "grading", "labtools", "sp
 
 _LAZY_NAMES = {"draw": "plotting", "energy_plot": "plotting", "lever_valley": "plotting",
                "family_plot": "plotting", "cognates_plot": "plotting", "animate": "animation",
-               "animate_parameter": "animation", "explore": "explore", "Explorer": "explore"}
+               "animate_parameter": "animation", "Explorer": "explore"}
 
 
 def __getattr__(name: str):
