@@ -259,7 +259,7 @@ class FourBarKinematics(Kinematics):
     """
 
     def __init__(self, A, B, crank: float, coupler: float, rocker: float, branch: int = 1,
-                 symbolic: str = "loop"):
+                 symbolic: str = "loop", circuit: float | None = None):
         from .elements import _finite, _point
 
         self.A = np.array(_point("pivot A", A))
@@ -279,7 +279,7 @@ class FourBarKinematics(Kinematics):
         self.nbodies = 4
         self.names = ("theta",)
         self.symbol_bodies = (1, 3) if symbolic == "loop" else (1, 2, 3)
-        self.q_range = self._crank_range()
+        self.q_range = self._crank_range(circuit)
 
     def _assembles(self, theta):
         jx = self.A[0] + self.r2 * np.cos(theta)
@@ -287,11 +287,28 @@ class FourBarKinematics(Kinematics):
         D = np.hypot(self.B[0] - jx, self.B[1] - jy)
         return (D <= self.r3 + self.r4) & (D >= abs(self.r3 - self.r4)) & (D > 0)
 
-    def _crank_range(self) -> np.ndarray:
-        """Widest interval of crank angles over which the linkage assembles."""
+    def _crank_range(self, circuit: float | None = None) -> np.ndarray:
+        """Interval of crank angles over which the linkage assembles.
+
+        With ``circuit`` (a crank angle, rad) the interval containing it; otherwise the
+        widest one (a crank that cannot turn fully may have two).
+        """
         base = np.arctan2(*(self.B - self.A)[::-1])
         t = base + np.linspace(-np.pi, np.pi, 7201)
         ok = self._assembles(t)
+        if circuit is not None:
+            from .elements import _finite
+
+            c = _finite("circuit (crank angle, rad)", circuit)
+            if not self._assembles(np.array(c)):
+                raise ValueError(f"the four-bar cannot assemble at the crank angle circuit = {c} rad")
+            if ok.all():
+                return np.array([[c - np.pi, c + np.pi]])
+            t = c + np.linspace(-2 * np.pi, 2 * np.pi, 14401)
+            ok = self._assembles(t)
+            bad = np.flatnonzero(~ok)
+            left, right = bad[bad < 7200].max(), bad[bad > 7200].min()
+            return np.array([[self._refine(t[left + 1], -1), self._refine(t[right - 1], +1)]])
         if ok.all():
             return np.array([[base - np.pi, base + np.pi]])
         if not ok.any():

@@ -172,39 +172,8 @@ class FourBar:
     @cached_property
     def kinematics(self) -> FourBarKinematics:
         """The closed-form position analysis (bodies 0 ground, 1 crank, 2 coupler, 3 rocker)."""
-        kin = FourBarKinematics(self.A, self.B, self.crank, self.coupler, self.rocker, self.branch)
-        if self.circuit is not None:
-            kin.q_range = self._interval_containing(float(self.circuit))
-        return kin
-
-    def _assembles(self, t):
-        jx = self.A[0] + self.crank * np.cos(t) - self.B[0]
-        jy = self.A[1] + self.crank * np.sin(t) - self.B[1]
-        D = np.hypot(jx, jy)
-        return (D <= self.coupler + self.rocker) & (D >= abs(self.coupler - self.rocker)) & (D > 0)
-
-    def _interval_containing(self, t0: float) -> np.ndarray:
-        """The interval of crank angles around ``t0`` over which the loop closes."""
-        if not self._assembles(np.array(t0)):
-            raise ValueError(f"the four-bar cannot assemble at the crank angle circuit = {t0} rad")
-        t = t0 + np.linspace(0.0, 2 * np.pi, 7201)
-        ok = self._assembles(t)
-        if ok.all():
-            return np.array([[t0 - np.pi, t0 + np.pi]])
-        ends = []
-        for sign in (1, -1):
-            tt = t0 + sign * (t - t0)
-            okk = self._assembles(tt)
-            first_bad = int(np.argmin(okk))
-            a, b = tt[first_bad - 1], tt[first_bad]
-            for _ in range(60):
-                m = 0.5 * (a + b)
-                if self._assembles(np.array(m)):
-                    a = m
-                else:
-                    b = m
-            ends.append(a)
-        return np.array([[ends[1], ends[0]]])
+        return FourBarKinematics(self.A, self.B, self.crank, self.coupler, self.rocker, self.branch,
+                                 circuit=self.circuit)
 
     @property
     def z(self) -> complex:

@@ -156,3 +156,21 @@ def test_symbolic_derivation_is_cached():
     first = d.balance_conditions()
     assert d.balance_conditions() == first
     assert ("coeffs", True) in d._sym_cache
+
+
+def test_four_bar_with_two_circuits_picks_the_one_asked_for():
+    from balancelab.kinematics import FourBarKinematics
+
+    args = ((0.0, 0.0), (1.0, 0.0), 0.8, 0.5, 0.2)  # the crank tip must stay 0.3-0.7 m from B
+    widest = FourBarKinematics(*args).q_range[0]
+    upper = FourBarKinematics(*args, circuit=0.6).q_range[0]
+    lower = FourBarKinematics(*args, circuit=-0.6).q_range[0]
+    assert upper[0] > 0 and lower[1] < 0
+    np.testing.assert_allclose(upper, -lower[::-1], atol=1e-9)
+    assert any(np.allclose(widest, r, atol=1e-9) for r in (upper, lower))
+    for lo, hi in (upper, lower):  # the ends are where the tip is 0.3 or 0.7 m from B
+        for t in (lo, hi):
+            D = np.hypot(0.8 * np.cos(t) - 1.0, 0.8 * np.sin(t))
+            assert min(abs(D - 0.3), abs(D - 0.7)) < 1e-9
+    with pytest.raises(ValueError, match="cannot assemble at the crank angle"):
+        FourBarKinematics(*args, circuit=0.0)
