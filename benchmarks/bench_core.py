@@ -1,22 +1,12 @@
 """Core library speed: energy evaluation, numeric synthesis, import time."""
 from __future__ import annotations
 
-import statistics
 import subprocess
 import sys
 import time
 
 import numpy as np
-
-
-def _median_time(fn, repeat: int = 200) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+from timing import best_time, median_time
 
 
 def run() -> list[tuple[str, float, str, str]]:
@@ -26,7 +16,7 @@ def run() -> list[tuple[str, float, str, str]]:
     arm = bl.serial_2r_min_preload()
     q = np.random.default_rng(0).uniform(-np.pi, np.pi, (1_000_000, 2))
     arm.potential_energy(q[:1000])
-    best = min(_time_once(lambda: arm.potential_energy(q)) for _ in range(3))
+    best = best_time(lambda: arm.potential_energy(q))
     rows.append(("2R potential_energy, 1e6 configurations", len(q) / best / 1e6, "M conf/s", ">= 10"))
     for name, fn in [
         ("lacoste_lever synthesis", lambda: bl.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)),
@@ -38,14 +28,9 @@ def run() -> list[tuple[str, float, str, str]]:
         ("peaucellier_board synthesis", bl.peaucellier_board),
         ("fourbar_two_springs synthesis", bl.fourbar_two_springs),
     ]:
-        rows.append((name + " (median)", _median_time(fn) * 1e3, "ms", "< 1"))
+        rows.append((name + " (median)", median_time(fn) * 1e3, "ms", "< 1"))
     out = subprocess.run([sys.executable, "-c", "import time; t = time.perf_counter(); import balancelab; "
                           "print(time.perf_counter() - t)"], capture_output=True, text=True, check=True)
     rows.append(("import balancelab (cold process)", float(out.stdout), "s", "< 0.5"))
     return rows
 
-
-def _time_once(fn) -> float:
-    t0 = time.perf_counter()
-    fn()
-    return time.perf_counter() - t0

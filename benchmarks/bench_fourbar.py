@@ -13,10 +13,10 @@ Rows (name, value, unit, target):
 """
 from __future__ import annotations
 
-import statistics
 import time
 
 import numpy as np
+from timing import best_time, median_time
 
 K = (0.1, -0.2)
 KL = 100.0
@@ -38,42 +38,23 @@ def _all_options(fb):
     return out
 
 
-def _median(fn, repeat: int = 50) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
-
-
-def _best(fn, repeat: int = 3) -> float:
-    fn()
-    best = float("inf")
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t0)
-    return best
-
 
 def run() -> list[tuple[str, float, str, str]]:
     from balancelab import spring_fourbar as sf
 
     rows = []
     fb = sf.example_fourbar()
-    rows.append(("all balancing options, 3 cognates (median)", _median(lambda: _all_options(fb)) * 1e3,
+    rows.append(("all balancing options, 3 cognates (median)", median_time(lambda: _all_options(fb)) * 1e3,
                  "ms", "< 5"))
     rows.append(("same, four-bar built from scratch (median)",
-                 _median(lambda: _all_options(sf.example_fourbar()), 20) * 1e3, "ms", "info"))
+                 median_time(lambda: _all_options(sf.example_fourbar()), 20) * 1e3, "ms", "info"))
     q = np.random.default_rng(0).uniform(-np.pi, np.pi, 1_000_000)
     err = sf.loop_closure_error(fb, q)
     assert float(err.max()) < 1e-12
     rows.append(("loop closure, 1e6 four-bar configurations (best of 3)",
-                 _best(lambda: sf.loop_closure_error(fb, q)), "s", "< 0.5"))
+                 best_time(lambda: sf.loop_closure_error(fb, q)), "s", "< 0.5"))
     d = sf.spring_loaded_fourbar(fb, K, KL)
-    rows.append(("same via Design.joint_error (best of 3)", _best(lambda: d.joint_error(q)), "s", "info"))
+    rows.append(("same via Design.joint_error (best of 3)", best_time(lambda: d.joint_error(q)), "s", "info"))
     return rows
 
 

@@ -1,11 +1,12 @@
 """Stiffness-matrix method (Lustig et al. 2015): numeric synthesis and cached symbolic solve."""
 from __future__ import annotations
 
-import statistics
 import subprocess
 import sys
 import time
 from pathlib import Path
+
+from timing import median_time
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -34,15 +35,6 @@ _FOUR = ("d = sm.balance_all_pairs((0.4, 0.3, 0.25, 0.2), (3.0, 2.0, 1.0, 0.5), 
          "tuple(f'b{c}{j}' for j in range(1, 11) for c in 'xy'))")
 
 
-def _median_time(fn, repeat: int = 200) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
-
 
 def _cold(body: str) -> tuple[float, float]:
     code = _COLD.format(body=body)
@@ -57,16 +49,16 @@ def run() -> list[tuple[str, float, str, str]]:
 
     rows = []
     lengths, masses, coms = (0.4, 0.3, 0.25), (3.0, 2.0, 1.0), ((0.2, 0.0), (0.15, 0.02), (0.1, 0.0))
-    t = _median_time(lambda: sm.balance_all_pairs(lengths, masses, coms))
+    t = median_time(lambda: sm.balance_all_pairs(lengths, masses, coms))
     rows.append(("numeric synthesis, 3 moving links, all-pairs springs -> Design", t * 1e3, "ms", "< 1"))
     chain = sm.SerialChain.from_values(2, sm.LUSTIG_TOPOLOGY, sm.lustig_values(1))
-    t = _median_time(lambda: sm.stiffness_matrix(chain), repeat=500)
+    t = median_time(lambda: sm.stiffness_matrix(chain), repeat=500)
     rows.append(("numeric K_t, paper example", t * 1e3, "ms", "< 1"))
     inputs = sm.lustig_values(1, solved=False)
     sm.solve(2, sm.LUSTIG_TOPOLOGY, inputs, sm.LUSTIG_UNKNOWNS)
-    t = _median_time(lambda: sm.solve(2, sm.LUSTIG_TOPOLOGY, inputs, sm.LUSTIG_UNKNOWNS))
+    t = median_time(lambda: sm.solve(2, sm.LUSTIG_TOPOLOGY, inputs, sm.LUSTIG_UNKNOWNS))
     rows.append(("solve(), paper example, cached symbolic solution", t * 1e3, "ms", "< 1"))
-    t = _median_time(lambda: sm.synthesize(2, sm.LUSTIG_TOPOLOGY, inputs, sm.LUSTIG_UNKNOWNS,
+    t = median_time(lambda: sm.synthesize(2, sm.LUSTIG_TOPOLOGY, inputs, sm.LUSTIG_UNKNOWNS,
                                            symbolic=False))
     rows.append(("synthesize() -> Design, paper example, cached", t * 1e3, "ms", "< 1"))
     cold, warm = _cold(_PAPER)

@@ -26,7 +26,7 @@ def _load(path: Path):
 
 
 def main(argv: list[str]) -> int:
-    sys.path.insert(0, str(HERE.parent))
+    sys.path[:0] = [str(HERE.parent), str(HERE)]
     files = sorted(HERE.glob("bench_*.py"))
     if argv:
         files = [f for f in files if f.stem.removeprefix("bench_") in argv]
