@@ -26,6 +26,8 @@ __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BAL
 #: potential energy over the sampled configurations, divided by the energy scale.
 BALANCE_TOLERANCE: float = 1e-9
 
+_CHUNK = 16384  # configurations evaluated at once by potential_energy
+
 
 class UnreachableConfiguration(ValueError):
     """Raised when a configuration is outside what the linkage can reach."""
@@ -404,6 +406,8 @@ class Design:
         trig: dict = {}
 
         def world(body, p):
+            if body == 0:  # the ground sits at the origin and never turns
+                return p[0], p[1]
             x, y = poses[..., body, 0], poses[..., body, 1]
             if p[0] == 0 and p[1] == 0:
                 return x, y
@@ -418,7 +422,7 @@ class Design:
         vl = []
         for b, p, f in zip(self._lb, self._lp, self._lf):
             x, y = world(b, p)
-            vl.append(-(f[0] * x + f[1] * y))
+            vl.append(np.broadcast_to(-(f[0] * x + f[1] * y), lead))
         vs = []
         for i in range(len(self.springs)):
             ax, ay = world(self._sab[i], self._sap[i])
@@ -453,12 +457,20 @@ class Design:
         >>> bool(np.ptp(e.total) < 1e-12)
         True
         """
-        poses = self.poses(q)
-        vl, vs = self._element_energies(poses)
-        zero = np.zeros(poses.shape[:-2])
-        load = sum(vl[1:], vl[0]) if vl else zero
-        spring = sum(vs[1:], vs[0]) if vs else zero
-        return Energy(load + spring, load, spring)
+        q = self._as_q(q)
+        lead = q.shape[:-1]
+        flat = q.reshape(-1, self.dof)
+        out = np.empty((3, len(flat)))
+        for start in range(0, len(flat), _CHUNK):  # chunks that stay in the CPU cache
+            part = flat[start:start + _CHUNK]
+            poses = self.poses(part)
+            vl, vs = self._element_energies(poses)
+            load = sum(vl[1:], vl[0]) if vl else 0.0
+            spring = sum(vs[1:], vs[0]) if vs else 0.0
+            out[1, start:start + len(part)] = load
+            out[2, start:start + len(part)] = spring
+        out[0] = out[1] + out[2]
+        return Energy(*(row.reshape(lead) for row in out))
 
     def generalized_force(self, q, h: float = 1e-6) -> np.ndarray:
         """``dV/dq`` (J/rad) by central differences, shape ``(..., dof)``.
