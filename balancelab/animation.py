@@ -20,7 +20,7 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from .design import Design
-from .plotting import Drawing, EnergyView, _check_design, _extent, _Geometry, default_q
+from .plotting import Drawing, EnergyView, _check_design, _extent, _Geometry, default_q, energy_limits
 
 __all__ = ["animate", "animate_parameter", "configuration_path"]
 
@@ -436,8 +436,8 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
                 vals = np.concatenate([v[np.isfinite(v)] for v in (e.load, e.spring, e.total)])
                 lows.append(vals.min())
                 highs.append(vals.max())
-            lo, hi = min(lows + [0.0]), max(highs + [0.0])
-            energy.ylim = (lo - 0.08 * (hi - lo or 1.0), hi + 0.08 * (hi - lo or 1.0))
+            scale = max((d.balance_report(n=200).scale for d in designs if d is not None), default=0.0)
+            energy.ylim = energy_limits(min(lows + [0.0]), max(highs + [0.0]), scale)
             energy.update(first)
     state = {"design": first}
 

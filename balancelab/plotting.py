@@ -686,6 +686,36 @@ def draw(design: Design, q=None, ax=None, labels: bool = True, *, color: str | N
 
 
 # ------------------------------------------------------------------------ energy
+def energy_limits(lo: float, hi: float, scale: float = 0.0) -> tuple[float, float]:
+    """y-limits (J) for energy curves spanning ``lo``..``hi``, never narrower than ``scale``.
+
+    A balanced design whose energies are all constant would otherwise zoom in on
+    round-off noise.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Smallest and largest energy shown (J).
+    scale : float
+        The design's energy scale (J), see :class:`balancelab.BalanceReport`.
+
+    Returns
+    -------
+    (float, float)
+
+    Examples
+    --------
+    >>> energy_limits(-1e-15, 1e-15, 40.0)
+    (-23.2, 23.2)
+    """
+    lo, hi = float(lo), float(hi)
+    span = max(hi - lo, float(scale), 1e-12)
+    mid = 0.5 * (lo + hi)
+    lo, hi = min(lo, mid - span / 2), max(hi, mid + span / 2)
+    pad = 0.08 * (hi - lo)
+    return lo - pad, hi + pad
+
+
 class EnergyView:
     """Energy curves (1 dof) or map (2 dof) of a design, updated in place.
 
@@ -807,10 +837,9 @@ class EnergyView:
             self.lines["spring"].set_data(x, spring)
             self.lines["total"].set_data(x, total)
             vals = np.concatenate([v[np.isfinite(v)] for v in (load, spring, total)] + [[0.0]])
-            lo, hi = float(vals.min()), float(vals.max())
-            pad = 0.08 * (hi - lo or 1.0)
             ax.set_xlim(x[0], x[-1])
-            ax.set_ylim(*(self.ylim or (lo - pad, hi + pad)))
+            ax.set_ylim(*(self.ylim or energy_limits(vals.min(), vals.max(),
+                                                     rep.scale if rep is not None else 0.0)))
         else:
             m = int(round(math.sqrt(len(grid))))
             Z = total.reshape(m, m)
