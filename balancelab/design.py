@@ -289,8 +289,15 @@ class Design:
         >>> d.poses(0.0)[1].tolist()
         [0.0, 0.0, 0.0]
         """
+        return self._checked_poses(q)[0]
+
+    def _checked_poses(self, q, trig: bool = False):
+        """Poses (and the kinematics' cached cos/sin when ``trig``), or a clear error."""
         qa = self._as_q(q)
-        poses, ok = self.kinematics.poses(qa)
+        if trig:
+            poses, ok, cache = self.kinematics.poses_with_trig(qa)
+        else:
+            (poses, ok), cache = self.kinematics.poses(qa), {}
         if not np.all(ok):
             bad = qa[~ok][0] if qa.ndim > 1 else qa
             rng = ", ".join(f"{n} in [{np.degrees(lo):.2f}°, {np.degrees(hi):.2f}°]"
@@ -299,7 +306,7 @@ class Design:
                 f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} rad "
                 f"({np.round(np.degrees(np.atleast_1d(bad)), 3).tolist()}°) cannot be reached; "
                 f"valid range: {rng}")
-        return poses
+        return poses, cache
 
     @staticmethod
     def _world(poses: np.ndarray, bodies: np.ndarray, points: np.ndarray):
@@ -400,10 +407,13 @@ class Design:
         return q
 
     # ----------------------------------------------------------------- energy
-    def _element_energies(self, poses: np.ndarray):
-        """Energy of each load and each spring: two lists of arrays of shape (...)."""
+    def _element_energies(self, poses: np.ndarray, trig: dict | None = None):
+        """Energy of each load and each spring: two lists of arrays of shape (...).
+
+        ``trig`` may hold ``{body: (cos, sin)}`` of body angles already computed.
+        """
         lead = poses.shape[:-2]
-        trig: dict = {}
+        trig = dict(trig or {})
 
         def world(body, p):
             if body == 0:  # the ground sits at the origin and never turns
@@ -463,8 +473,8 @@ class Design:
         out = np.empty((3, len(flat)))
         for start in range(0, len(flat), _CHUNK):  # chunks that stay in the CPU cache
             part = flat[start:start + _CHUNK]
-            poses = self.poses(part)
-            vl, vs = self._element_energies(poses)
+            poses, trig = self._checked_poses(part, trig=True)
+            vl, vs = self._element_energies(poses, trig)
             load = sum(vl[1:], vl[0]) if vl else 0.0
             spring = sum(vs[1:], vs[0]) if vs else 0.0
             out[1, start:start + len(part)] = load

@@ -76,6 +76,11 @@ class Kinematics:
         """Return ``(poses, ok)``: poses of shape ``(..., nbodies, 3)`` and a boolean mask."""
         raise NotImplementedError
 
+    def poses_with_trig(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, dict]:
+        """:meth:`poses` plus any ``{body: (cos(angle), sin(angle))}`` already computed."""
+        poses, ok = self.poses(q)
+        return poses, ok, {}
+
     def symbols(self):
         """The sympy symbols of the configuration coordinates."""
         sp = _sympy()
@@ -126,8 +131,10 @@ class ExplicitKinematics(Kinematics):
 
     def poses(self, q):
         q = np.asarray(q, dtype=float)
+        return self._assemble(q, self._pose_fn(tuple(q[..., i] for i in range(self.dof)), np))
+
+    def _assemble(self, q, comps):
         lead = q.shape[:-1]
-        comps = self._pose_fn(tuple(q[..., i] for i in range(self.dof)), np)
         out = np.empty((self.nbodies, 3) + lead)
         for b, (x, y, a) in enumerate(comps):
             out[b, 0], out[b, 1], out[b, 2] = x, y, a
@@ -182,8 +189,9 @@ class TreeKinematics(ExplicitKinematics):
         def coef(v):
             return int(v) if float(v).is_integer() else float(v)
 
-        def pose_fn(q, lib):
+        def pose_fn(q, lib, trig=None):
             symbolic = lib is not np
+            trig = {} if trig is None else trig
             angles = []
             for b in range(nbodies):
                 a = 0
@@ -193,8 +201,6 @@ class TreeKinematics(ExplicitKinematics):
                 if c[b] != 0:
                     a = a + (lib.nsimplify(c[b], [lib.pi]) if symbolic else c[b])
                 angles.append(a)
-            trig = {}
-
             def turn(b, p):
                 if p[0] == 0 and p[1] == 0:
                     return 0, 0
@@ -214,6 +220,12 @@ class TreeKinematics(ExplicitKinematics):
             return [(pos[b][0], pos[b][1], angles[b]) for b in range(nbodies)]
 
         super().__init__(nbodies, names, q_range, pose_fn, open_range=open_range)
+
+    def poses_with_trig(self, q):
+        q = np.asarray(q, dtype=float)
+        trig: dict = {}
+        poses, ok = self._assemble(q, self._pose_fn(tuple(q[..., i] for i in range(self.dof)), np, trig))
+        return poses, ok, trig
 
 
 def _spanning_tree(nbodies: int, joints: Sequence[Joint]):
