@@ -628,13 +628,13 @@ class Design:
                 else:
                     length = sp.powdenest(sp.sqrt(sp.factor(sp.trigsimp(sp.expand(d2)))), force=True)
                     length = length.replace(sp.Abs, lambda x: x)
-                    self._check_symbolic_length(kin, syms, length, ((ba, pa), (bb, pb)), parametric)
+                    self._check_symbolic_length(syms, length, ((ba, pa), (bb, pb)), parametric)
                     vs += k / 2 * (length - l0) ** 2
             self._sym_cache[key] = (vl, vs)
         vl, vs = self._sym_cache[key]
         return (vl, vs) if split else vl + vs
 
-    def _check_symbolic_length(self, kin, syms, length, ends, parametric) -> None:
+    def _check_symbolic_length(self, syms, length, ends, parametric) -> None:
         """A finite-free-length spring's symbolic length must match the numeric one."""
         import sympy as sp
 
@@ -642,7 +642,7 @@ class Design:
         values = dict(self.symbolic.values) if (parametric and self.symbolic is not None) else {}
         for qi in q:
             sub = dict(values)
-            sub.update(dict(zip(syms, qi)))
+            sub.update(dict(zip(syms, self.kinematics.symbol_values(qi))))
             num = float(sp.sympify(length).subs(sub).evalf())
             pts = []
             for body, p in ends:
