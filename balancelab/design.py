@@ -499,7 +499,6 @@ class Design:
         """
         q = self._as_q(q)
         out = np.empty(q.shape)
-        V0 = None
         for i in range(self.dof):
             e = np.zeros(self.dof)
             e[i] = h
@@ -507,8 +506,6 @@ class Design:
             okm = self.reachable(q - e)
             qp = np.where(okp[..., None], q + e, q)
             qm = np.where(okm[..., None], q - e, q)
-            if not np.all(okp & okm) and V0 is None:
-                V0 = self.potential_energy(q).total
             vp = self.potential_energy(qp).total
             vm = self.potential_energy(qm).total
             den = np.where(okp, h, 0.0) + np.where(okm, h, 0.0)
