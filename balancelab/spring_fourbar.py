@@ -155,8 +155,9 @@ class FourBar:
             object.__setattr__(self, name, _finite(f"{name} length (m)", getattr(self, name), positive=True))
         object.__setattr__(self, "coupler_point", _point("coupler_point E (coupler frame, m)",
                                                           self.coupler_point))
-        if self.branch not in (1, -1):
+        if isinstance(self.branch, bool) or self.branch not in (1, -1):
             raise ValueError(f"branch must be +1 or -1, got {self.branch!r}")
+        object.__setattr__(self, "branch", int(self.branch))
         r1 = math.dist(self.A, self.B)
         if r1 == 0:
             raise ValueError("ground pivots A and B coincide; a four-bar needs two distinct pivots")
@@ -860,6 +861,10 @@ def technique2(fourbar: FourBar, K, k_l: float, base: str = "A", h: float = 0.1,
 
 def _family(core, h_values):
     h = np.atleast_1d(np.asarray(h_values, dtype=float))
+    if h.ndim != 1:
+        raise ValueError(f"h_values must be a 1-D sequence of lengths (m), got shape {h.shape}")
+    if not np.all(np.isfinite(h)):
+        raise ValueError(f"h_values must be finite lengths (m), got {h.tolist()}")
     H = np.full((len(h), 2), np.nan)
     kb = np.full(len(h), np.nan)
     kt = np.full(len(h), np.nan)
@@ -881,7 +886,8 @@ def technique2_family(fourbar: FourBar, K, k_l: float, base: str, h_values) -> d
     fourbar, K, k_l, base
         As in :func:`technique2_parameters`.
     h_values : array_like
-        Values of the free parameter (m).
+        Values of the free parameter (m), finite (ValueError otherwise; values <= 0
+        are reported infeasible).
 
     Returns
     -------
@@ -927,11 +933,16 @@ def technique1_feasible(fourbar: FourBar, K, l1: float, l2: float) -> bool:
     K : (float, float)
         Load spring anchor (m).
     l1, l2 : float
-        ``|PE|`` and ``|PK|`` (m).
+        ``|PE|`` and ``|PK|`` (m), > 0.
 
     Returns
     -------
     bool
+
+    Raises
+    ------
+    ValueError
+        If ``l1`` or ``l2`` is not a finite positive length.
 
     Examples
     --------
@@ -939,6 +950,8 @@ def technique1_feasible(fourbar: FourBar, K, l1: float, l2: float) -> bool:
     True
     """
     K = _point("K", K)
+    l1 = _finite("l1 = |PE| (m)", l1, positive=True)
+    l2 = _finite("l2 = |PK| (m)", l2, positive=True)
     E = coupler_curve(fourbar, 4001)
     dist = np.hypot(E[:, 0] - K[0], E[:, 1] - K[1])
     return bool(dist.min() > abs(l1 - l2) and dist.max() < l1 + l2)
@@ -977,6 +990,9 @@ def technique1_family(fourbar: FourBar, K, k_l: float, l1_values, l2_values) -> 
     k_l = _finite("k_l (N/m)", k_l, positive=True)
     l1 = np.atleast_1d(np.asarray(l1_values, dtype=float))
     l2 = np.atleast_1d(np.asarray(l2_values, dtype=float))
+    for name, v in (("l1_values", l1), ("l2_values", l2)):
+        if v.ndim != 1 or not np.all(np.isfinite(v)):
+            raise ValueError(f"{name} must be a 1-D sequence of finite lengths (m), got {v.tolist()}")
     E = coupler_curve(fourbar, 4001)
     dist = np.hypot(E[:, 0] - K[0], E[:, 1] - K[1])
     L1, L2 = np.meshgrid(l1, l2, indexing="ij")
@@ -1225,7 +1241,8 @@ def technique3_family(fourbar: FourBar, K, k_l: float, plagiograph_base: str, pa
     fourbar, K, k_l, plagiograph_base, parallelogram_base
         As in :func:`technique3_parameters`.
     h_values : array_like
-        Values of the free parameter (m).
+        Values of the free parameter (m), finite (ValueError otherwise; values <= 0
+        are reported infeasible).
 
     Returns
     -------

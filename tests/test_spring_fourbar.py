@@ -411,3 +411,20 @@ def test_technique2_symbolic_energy_is_a_multiple_of_the_loop_equation(base):
         if key == "1":
             continue
         assert value == pytest.approx(lam * lcoef.get(key, 0.0), abs=1e-9 * abs(lam))
+
+
+def test_nonsense_lengths_and_family_values_are_refused():
+    # a negative or NaN dyad length is an input error, not an infeasible design
+    for l1, l2 in ((-0.3, 0.3), (0.3, 0.0), (float("nan"), 0.3)):
+        with pytest.raises(ValueError, match="l1|l2"):
+            sf.technique1_feasible(FB, K, l1, l2)
+    with pytest.raises(ValueError, match="l1_values"):
+        sf.technique1_family(FB, K, KL, [float("nan"), 0.3], [0.3])
+    for bad in ([float("nan"), 0.1], [0.1, float("inf")], [[0.1, 0.2]]):
+        with pytest.raises(ValueError, match="h_values"):
+            sf.technique2_family(FB, K, KL, "A", bad)
+        with pytest.raises(ValueError, match="h_values"):
+            sf.technique3_family(FB, K, KL, "A", "A", bad)
+    with pytest.raises(ValueError, match="branch"):
+        sf.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=True)
+    assert sf.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=-1.0).branch == -1
