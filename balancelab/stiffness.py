@@ -500,6 +500,8 @@ def quadratic_energy(chain: SerialChain, q, g: float = G) -> np.ndarray:
     q = np.asarray(q, dtype=float)
     if q.ndim == 0 or q.shape[-1] != chain.n:
         raise ValueError(f"q must have shape (..., {chain.n}), got {q.shape}")
+    if not np.all(np.isfinite(q)):
+        raise ValueError("q (absolute link angles, rad) must be finite")
     K = stiffness_matrix(chain, g)
     Q = _state_vector(q)
     return 0.5 * np.einsum("...i,ij,...j->...", Q, K, Q)
@@ -1359,12 +1361,25 @@ def lustig_case4() -> Design:
     return lustig_table3e_case(4)
 
 
-def _vals(values) -> dict:
+_POSITIVE_NAMES = ("m2", "m3", "L2", "k1", "k2", "g")
+
+
+def _vals(values, needs: tuple = ()) -> dict:
+    """The parameters as a dict; each name in ``needs`` must be there and finite
+    (masses, ``L2``, spring rates and ``g`` > 0)."""
     if isinstance(values, Design):
-        return dict(values.parameters)
-    if isinstance(values, Mapping):
-        return dict(values)
-    raise TypeError(f"values must be a mapping of parameter names or a Design, got {type(values).__name__}")
+        v = dict(values.parameters)
+    elif isinstance(values, Mapping):
+        v = dict(values)
+    else:
+        raise TypeError(f"values must be a mapping of parameter names or a Design, got {type(values).__name__}")
+    missing = [name for name in needs if name not in v]
+    if missing:
+        raise ValueError(f"values lacks {', '.join(missing)} (needed: {', '.join(needs)})")
+    for name in needs:
+        unit = {"m": "kg", "k": "N/m", "g": "m/s^2"}.get(name[0], "m")
+        v[name] = _finite(f"values[{name!r}] ({unit})", v[name], positive=name in _POSITIVE_NAMES)
+    return v
 
 
 def lustig_alpha(values) -> float:
@@ -1388,7 +1403,7 @@ def lustig_alpha(values) -> float:
     >>> round(lustig_alpha(lustig_values(3, solved=False)), 6)
     -0.244979
     """
-    v = _vals(values)
+    v = _vals(values, ("m2", "m3", "L2", "sx2", "sy2"))
     return math.atan2(v["m2"] * v["sy2"], v["m2"] * v["sx2"] + v["m3"] * v["L2"])
 
 
@@ -1409,7 +1424,7 @@ def lustig_b1(values) -> tuple[float, float]:
     >>> [round(x, 4) for x in lustig_b1(lustig_values(3, solved=False))]
     [0.1059, 0.0265]
     """
-    v = _vals(values)
+    v = _vals(values, ("L2", "m2", "m3", "sx2", "sy2", "sx3", "sy3"))
     L, m2, m3 = v["L2"], v["m2"], v["m3"]
     den = (L * m3 + m2 * v["sx2"]) ** 2 + m2 ** 2 * v["sy2"] ** 2
     bx = (L ** 2 * m3 ** 2 * v["sx3"] + L * m2 * m3 * (v["sx2"] * v["sx3"] + v["sy2"] * v["sy3"])) / den
@@ -1436,9 +1451,8 @@ def lustig_a1(values) -> tuple[float, float]:
     >>> [round(x, 4) for x in lustig_a1(dict(lustig_values(3, solved=False), k1=261.6))]
     [-0.025, 0.1]
     """
-    v = _vals(values)
-    g = v.get("g", G)
-    k1 = _finite("k1 (N/m)", v["k1"], positive=True)
+    v = _vals(dict({"g": G}, **_vals(values)), ("k1", "L2", "m2", "m3", "sx2", "sy2", "g"))
+    g, k1 = v["g"], v["k1"]
     return (v["m2"] * g * v["sy2"] / (v["L2"] * k1),
             (v["m2"] * g * v["sx2"] + v["m3"] * g * v["L2"]) / (v["L2"] * k1))
 
@@ -1463,7 +1477,7 @@ def lustig_min_energy_pose(values) -> np.ndarray:
     >>> lustig_min_energy_pose(lustig_values(1, solved=False)).round(4).tolist()
     [-1.5708, -1.5708]
     """
-    v = _vals(values)
+    v = _vals(values, ("m2", "m3", "L2", "sx2", "sy2", "sx3", "sy3"))
     return np.array([-math.pi / 2 - lustig_alpha(v), -math.pi / 2 - math.atan2(v["sy3"], v["sx3"])])
 
 
@@ -1487,5 +1501,5 @@ def spring2_invariant(values) -> float:
     >>> round(spring2_invariant(lustig_values(1)), 3)
     8.829
     """
-    v = _vals(values)
+    v = _vals(values, ("k2", "L2", "ax2", "ay2", "bx2", "by2"))
     return v["k2"] * math.hypot(v["ax2"] - v["L2"], v["ay2"]) * math.hypot(v["bx2"], v["by2"])

@@ -516,3 +516,19 @@ def test_design_balance_conditions_are_eq17():
     for o in ours:
         assert any(sp.expand(t - o) == 0 or sp.expand(t + o) == 0 for t in theirs), o
     assert d.conditions_residual() < 1e-12
+
+
+def test_paper_helpers_refuse_missing_or_nonsense_values():
+    v = lustig_values(3)
+    with pytest.raises(ValueError, match="lacks m2"):
+        lustig_alpha({k: x for k, x in v.items() if k != "m2"})
+    for fn, name, bad in ((lustig_b1, "m3", -2.0), (lustig_alpha, "L2", 0.0), (lustig_a1, "k1", -261.6),
+                          (spring2_invariant, "k2", float("nan")), (lustig_min_energy_pose, "sy3", float("inf")),
+                          (lustig_a1, "g", 0.0)):
+        with pytest.raises(ValueError, match=name):
+            fn(dict(v, **{name: bad}))
+    with pytest.raises(TypeError, match="mapping"):
+        lustig_b1([1.0, 2.0])
+    chain = SerialChain.from_values(2, LUSTIG_TOPOLOGY, v)
+    with pytest.raises(ValueError, match="finite"):
+        quadratic_energy(chain, [float("nan"), 0.0])
