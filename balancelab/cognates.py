@@ -210,8 +210,9 @@ def cognate_design(fourbar: FourBar, index: int, K=None, k_l: float = 1.0) -> De
     >>> float(d.joint_error(d.sample(50)).max()) < 1e-12
     True
     """
-    if index not in (1, 2, 3):
+    if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or index not in (1, 2, 3):
         raise ValueError(f"index must be 1, 2 or 3, got {index!r}")
+    index = int(index)
     cg = cognates(fourbar)[index - 1]
     kin = _driver(fourbar, index, cg)
     springs = []

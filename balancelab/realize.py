@@ -100,8 +100,10 @@ def pulley_string(center, radius: float, point, spring_direction=(0.0, 1.0), tur
     if turn not in (1, -1):
         raise ValueError(f"turn must be +1 or -1, got {turn!r}")
     p = np.asarray(point, dtype=float)
-    if p.shape[-1] != 2:
+    if p.ndim == 0 or p.shape[-1] != 2:
         raise ValueError(f"point must have shape (..., 2), got {p.shape}")
+    if not np.all(np.isfinite(p)):
+        raise ValueError("point (attachment on the moving link, m) must be finite")
     rel = p[..., 0] + 1j * p[..., 1] - c
     d = np.abs(rel)
     if np.any(d <= radius):

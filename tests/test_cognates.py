@@ -167,6 +167,9 @@ def test_bad_input():
     fam = cg.cognate_family(FB, K, KL, 2)
     with pytest.raises(ValueError, match="infinite or negative"):
         fam.member(0.0)
+    for index in (0, 4, 1.0, True, "1"):
+        with pytest.raises(ValueError, match="index must be 1, 2 or 3"):
+            cg.cognate_design(FB, index)
 
 
 # ------------------------------------------------------------------ hypothesis

@@ -75,6 +75,10 @@ def test_pulley_bad_input():
         rz.pulley_lever(radius=-0.01)
     with pytest.raises(ValueError, match="within the pulley"):
         rz.pulley_string((0, 0), 0.1, [0.05, 0.0])
+    with pytest.raises(ValueError, match="finite"):
+        rz.pulley_string((0, 0), 0.1, [float("nan"), 0.5])
+    with pytest.raises(ValueError, match="shape"):
+        rz.pulley_string((0, 0), 0.1, 0.5)
     with pytest.raises(ValueError, match="turn"):
         rz.pulley_string((0, 0), 0.1, [0.5, 0.0], turn=0)
     with pytest.raises(ValueError, match="realization='pulley'"):
