@@ -260,7 +260,8 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     fps : float
         Frames per second of playback.
     path : array_like, shape (m, dof), optional
-        Configurations (rad) to show instead of the default path.
+        Configurations (rad) to show instead of the default path (shape ``(m,)`` is
+        accepted for one coordinate).
     figsize : (float, float)
         Figure size (inches).
     dpi : float
@@ -287,7 +288,12 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     if path is None:
         path = configuration_path(design, frames)
     else:
-        path = np.asarray(path, dtype=float).reshape(-1, design.dof)
+        path = np.asarray(path, dtype=float)
+        if design.dof == 1 and path.ndim == 1:
+            path = path[:, None]
+        if path.ndim != 2 or path.shape[1] != design.dof or len(path) == 0:
+            raise ValueError(f"path must have shape (m, {design.dof}) (configurations in rad, m >= 1) for "
+                             f"the coordinates {design.q_names}, got shape {path.shape}")
         design.poses(path)
     show_energy = design.dof <= 2
     fig, axes = _figure(figsize, dpi, 2 if show_energy else 1)

@@ -117,6 +117,13 @@ def default_q(design: Design) -> np.ndarray:
     return design.sample(1, seed=0)[0]
 
 
+def _count(name: str, n, minimum: int = 2) -> int:
+    """``n`` as an int >= ``minimum``, or a ValueError naming ``name``."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < minimum:
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {n!r}")
+    return int(n)
+
+
 def _as_config(design: Design, q) -> np.ndarray:
     if q is None:
         return default_q(design)
@@ -156,6 +163,8 @@ def report_summary(report) -> str:
     >>> report_summary(bl.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report())[:8]
     'balanced'
     """
+    if not all(hasattr(report, a) for a in ("balanced", "variation", "residual", "scale", "worst_q")):
+        raise TypeError(f"report must be a BalanceReport (design.balance_report()), got {type(report).__name__}")
     if report.balanced:
         return f"balanced (energy constant to {report.variation:.1e} of its scale)"
     q = ", ".join(f"{np.degrees(v):.0f}°" for v in np.atleast_1d(report.worst_q))
@@ -708,8 +717,13 @@ def energy_limits(lo: float, hi: float, scale: float = 0.0) -> tuple[float, floa
     >>> energy_limits(-1e-15, 1e-15, 40.0)
     (-23.2, 23.2)
     """
-    lo, hi = float(lo), float(hi)
-    span = max(hi - lo, float(scale), 1e-12)
+    from .elements import _finite
+
+    lo, hi = _finite("lo (J)", lo), _finite("hi (J)", hi)
+    scale = _finite("scale (J)", scale, nonnegative=True)
+    if hi < lo:
+        raise ValueError(f"need lo <= hi, got lo = {lo}, hi = {hi}")
+    span = max(hi - lo, scale, 1e-12)
     mid = 0.5 * (lo + hi)
     lo, hi = min(lo, mid - span / 2), max(hi, mid + span / 2)
     pad = 0.08 * (hi - lo)
@@ -744,7 +758,7 @@ class EnergyView:
         if design.dof > 2:
             raise ValueError(f"energy_plot draws 1 or 2 degrees of freedom; {design.name} has {design.dof}")
         self.ax = _new_axes(ax, figsize=(5.0, 3.4))
-        self.n = int(n) if n is not None else (241 if design.dof == 1 else 61)
+        self.n = _count("n", n) if n is not None else (241 if design.dof == 1 else 61)
         self.residual_ax = residual_ax
         self.show_title = title
         #: fixed energy-axis limits (J) for one dof; ``None`` to fit each design
@@ -919,7 +933,7 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     q : array_like, optional
         A configuration (rad) to mark.
     n : int, optional
-        Points along the range (1 dof, default 241) or per side of the map (2 dof,
+        Points (an integer >= 2) along the range (1 dof, default 241) or per side of the map (2 dof,
         default 61).
     residual : bool or matplotlib.axes.Axes, optional
         Two degrees of freedom only: draw the map of the residual generalized force
@@ -976,7 +990,7 @@ def lever_valley(weight: float = 10.0, l: float = 0.5, a_range=(0.05, 1.0), b_ra
     a_range, b_range : (float, float)
         Ranges of ``a_x`` and ``b_y`` (m), both ends > 0.
     n : int
-        Grid points per side.
+        Grid points per side, >= 2.
     ax : matplotlib.axes.Axes, optional
         Axes (3-D Axes for ``kind="surface"``); a new figure by default.
     kind : {"contour", "surface"}
@@ -1007,6 +1021,7 @@ def lever_valley(weight: float = 10.0, l: float = 0.5, a_range=(0.05, 1.0), b_ra
         rngs.append((lo, hi))
     if kind not in ("contour", "surface"):
         raise ValueError(f"kind must be 'contour' or 'surface', got {kind!r}")
+    n = _count("n", n)
     a = np.linspace(*rngs[0], n)
     b = np.linspace(*rngs[1], n)
     A, B = np.meshgrid(a, b)
@@ -1192,7 +1207,7 @@ def cognates_plot(designs: Sequence[Design], point: str = "P", *, q=None, n: int
         One configuration (rad) per design at which to draw it (default:
         :func:`default_q` of each).
     n : int
-        Samples along each range.
+        Samples along each range, >= 2.
     ax : matplotlib.axes.Axes, optional
     show : bool
         Draw the mechanisms (otherwise only the curves).
@@ -1213,6 +1228,7 @@ def cognates_plot(designs: Sequence[Design], point: str = "P", *, q=None, n: int
     designs = list(designs)
     if not designs:
         raise ValueError("designs must hold at least one Design")
+    n = _count("n", n)
     ax = _new_axes(ax, figsize=(5.5, 4.5))
     colours = [PALETTE[c] for c in ("blue", "vermillion", "green", "orange", "purple", "sky")]
     curves = []

@@ -95,6 +95,11 @@ def test_animate_rejects_bad_input():
     scissors = bl.catalog()["scissors_lift"]()
     with pytest.raises(bl.UnreachableConfiguration):
         animate(scissors, path=[[0.1], [3.0]])
+    # a path of the wrong shape is refused, not reshaped into other configurations
+    for bad in (np.zeros((5, 3)), np.zeros((0, 1)), np.zeros((2, 2, 1))):
+        with pytest.raises(ValueError, match="path must have shape"):
+            animate(d, path=bad)
+    assert animate(d, path=[0.1, 0.2, 0.3]).path.shape == (3, 1)
 
 
 def test_parameter_animation_rebuilds_each_design_and_shows_invalid_values():

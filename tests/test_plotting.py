@@ -271,6 +271,25 @@ def test_energy_plot_marks_a_configuration():
     assert y[0] == pytest.approx(float(d.potential_energy([0.5]).total))
 
 
+def test_counts_and_energy_limits_refuse_nonsense():
+    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    for n in (0, 1, 2.5, True):
+        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+            P.energy_plot(d, n=n)
+        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+            P.lever_valley(n=n)
+        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+            P.cognates_plot([d], point="p", n=n)
+    with pytest.raises(ValueError, match="lo"):
+        P.energy_limits(float("nan"), 1.0)
+    with pytest.raises(ValueError, match="lo <= hi"):
+        P.energy_limits(2.0, 1.0)
+    with pytest.raises(ValueError, match="scale"):
+        P.energy_limits(0.0, 1.0, -1.0)
+    with pytest.raises(TypeError, match="BalanceReport"):
+        P.report_summary(3)
+
+
 def test_report_summary_names_verdict_and_residual():
     rep = bl.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05).balance_report()
     text = P.report_summary(rep)
