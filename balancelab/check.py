@@ -355,7 +355,25 @@ def vector(answer, n: int, dimension: str, what: str = "the answer") -> list[flo
 
 
 def point(answer, what: str) -> np.ndarray:
-    """A planar point ``(x, y)`` in metres (strings with units allowed)."""
+    """A planar point ``(x, y)`` in metres (strings with units allowed), or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : sequence of two
+        ``x`` and ``y``, each a number in metres or a string with a unit of length.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    numpy.ndarray, shape (2,)
+        In metres.
+
+    Examples
+    --------
+    >>> point(("10 cm", 0.2), "the anchor").tolist()
+    [0.1, 0.2]
+    """
     return np.array(vector(answer, 2, "length", what))
 
 
@@ -382,19 +400,75 @@ def _compare(value: float, expected: float, rtol: float, unit: str) -> tuple[boo
                 break
         if not hint:
             hint = (f"Your answer is too {'large' if ratio > 1 else 'small'} "
-                    f"(outside the {tol} tolerance). Recheck the moment balance about the pivot.")
+                    f"(outside the {tol} tolerance). Recheck each step and its units.")
     return False, f"Not within {tol} of the expected value.", hint
 
 
 def numeric(answer, expected: float, dimension: str, rtol: float = 5e-3) -> tuple[bool, str, str]:
-    """Numeric check of one quantity (see :func:`quantity`) within relative tolerance ``rtol``."""
+    """Numeric check of one quantity (see :func:`quantity`) within relative tolerance ``rtol``.
+
+    Parameters
+    ----------
+    answer : float or str or (float, str)
+        The student's answer, as :func:`quantity` reads it.
+    expected : float
+        The right value, in the SI unit of ``dimension``; never shown in the messages.
+    dimension : str
+        As in :func:`quantity` (``"length"``, ``"stiffness"``, ...).
+    rtol : float
+        Accepted relative error (absolute, in SI units, when ``expected`` is 0).
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``; the hint names a common slip (a factor ``g``,
+        1000, 2 or a sign) when the ratio matches one.
+
+    Raises
+    ------
+    AnswerError
+        If the answer cannot be read as a quantity of that dimension.
+
+    Examples
+    --------
+    >>> numeric("25 cm", 0.25, "length")[0]
+    True
+    >>> numeric(250.0, 0.25, "length")[2]
+    'Your answer is a factor 1000 too large: check mm against m.'
+    """
     value = quantity(answer, dimension)
     return _compare(value, expected, rtol, _UNITS[dimension][0])
 
 
 def numeric_vector(answer, expected, dimension: str, rtol: float = 5e-3,
                    names=None) -> tuple[bool, str, str]:
-    """Numeric check of a tuple of quantities, item by item."""
+    """Numeric check of a tuple of quantities, item by item (see :func:`numeric`).
+
+    Parameters
+    ----------
+    answer : sequence
+        The student's items, as :func:`vector` reads them.
+    expected : sequence of float
+        The right values (SI units).
+    dimension : str
+        Dimension of every item.
+    rtol : float
+        Accepted relative error of each item.
+    names : sequence of str, optional
+        How to name the items in messages (``"item 1"``, ... by default).
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``; the message names the items that are off.
+
+    Examples
+    --------
+    >>> numeric_vector((0.5, "2 kg"), (0.5, 2.0), "mass", names=("m_B", "m_C"))[0]
+    True
+    >>> numeric_vector((0.5, 3.0), (0.5, 2.0), "mass", names=("m_B", "m_C"))[1]
+    'm_C not within 0.5 %.'
+    """
     values = vector(answer, len(expected), dimension)
     names = names or [f"item {i + 1}" for i in range(len(expected))]
     bad = []
@@ -413,8 +487,37 @@ def symbolic(answer, expected, names: str, what: str = "the expression") -> tupl
     """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
 
     Symbols are matched by name, whatever their assumptions. The difference must simplify
-    to zero; when ``simplify`` cannot decide, the two are compared at random positive
-    values of the symbols (relative 1e-9), which equivalent expressions always pass.
+    to zero; when ``simplify`` cannot decide, the two are compared at six seeded random
+    positive values of the symbols (relative 1e-9), which equivalent expressions always
+    pass.
+
+    Parameters
+    ----------
+    answer : sympy.Expr or str or number
+        The student's expression (a string is parsed with the allowed symbols).
+    expected : sympy.Expr
+        The right expression.
+    names : str
+        The allowed symbol names, separated by spaces.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``.
+
+    Raises
+    ------
+    AnswerError
+        If the answer cannot be parsed, is an equation, or uses other symbols.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> m, r = sp.symbols("m r")
+    >>> symbolic("r*m/2", m * r / 2, "m r")[0], symbolic(m * r, m * r / 2, "m r")[0]
+    (True, False)
     """
     import sympy as sp
 
@@ -498,6 +601,14 @@ def design_balanced(design: Design, constraints: list[tuple[bool, str]],
     -------
     (bool, str, str)
         ``(correct, message, hint)``.
+
+    Examples
+    --------
+    >>> d = lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2))
+    >>> design_balanced(d, [(True, "k above 400 N/m")])[0]
+    True
+    >>> design_balanced(d, [(False, "k above 400 N/m")])[1]
+    'Your design is balanced (energy varies by less than 1e-9 of its scale); it violates: k above 400 N/m.'
     """
     try:
         rep = design.balance_report(n=n, tolerance=tolerance)
@@ -909,7 +1020,7 @@ def _t61(answer):
     return numeric(answer, lab6_scissors(LAB6_SCISSORS["a"]).parameters["k1"], "stiffness")
 
 
-@_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's arm for a_x1 = 0.25 m", "k1_board",
+@_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's crank for a_x1 = 0.25 m", "k1_board",
        "numeric", "a number in N/m; accepted within 0.5 %")
 def _t62(answer):
     from .peaucellier import peaucellier_board
