@@ -33,6 +33,8 @@ spring ``k_l`` (anchor ``K``) with balancing spring 1 ``k_b`` (anchor ``H``), bo
 spring along the diagonal ``WE`` of a parallelogram is balanced by a spring of the same
 stiffness along the other diagonal, so balancing spring 2 must have
 ``k_t = k_b + k_l``. (Technique 3's eq. 8, ``k_t = k_b + k_l / m^2``, has the same form.)
+The paper's own prototype (Sec. 2.3), said to satisfy eqs 2-4, confirms the reading: its
+springs are in the ratio ``k_l : k_b : k_t = 1 : 1 : 2``, i.e. ``k_t = k_b + k_l``.
 """
 from __future__ import annotations
 
