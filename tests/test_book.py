@@ -256,6 +256,14 @@ def test_every_page_in_a_browser(site, server, browser):
         if resp is None or resp.status != 200:
             problems.append(f"{where}: status {resp and resp.status}")
             continue
+        redirect = re.search(r'http-equiv="Refresh" content="0; url=([^"]+)"', (site / rel).read_text())
+        if redirect:  # a redirect-only page (the site's index): check its target, then move on
+            target = urljoin(url, redirect.group(1))
+            page.wait_for_url(target, timeout=10000)
+            page.wait_for_load_state("load")
+            if not (site / urljoin(rel, redirect.group(1))).is_file():
+                problems.append(f"{where}: redirects to a missing page {redirect.group(1)}")
+            continue
         page.wait_for_timeout(300)
         res = page.evaluate(PAGE_CHECKS)
         for key in ("unrendered", "errors", "broken", "noalt"):
