@@ -6,16 +6,9 @@ import sys
 import time
 from pathlib import Path
 
+from timing import best_time
+
 ROOT = Path(__file__).resolve().parent.parent
-
-
-def _best(fn, repeat: int = 3) -> float:
-    best = float("inf")
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        best = min(best, time.perf_counter() - t)
-    return best
 
 
 def run() -> list[tuple[str, float, str, str]]:
@@ -23,11 +16,11 @@ def run() -> list[tuple[str, float, str, str]]:
     from balancelab.check import check
 
     rows = [
-        ("check: numeric answer (2.1)", 1e3 * _best(lambda: check("2.1", "196.2 N/m")), "ms", "< 5 ms"),
-        ("check: symbolic answer (2.2)", 1e3 * _best(lambda: check("2.2", ("-a_x*b_x/b_y",
+        ("check: numeric answer (2.1)", 1e3 * best_time(lambda: check("2.1", "196.2 N/m")), "ms", "< 5 ms"),
+        ("check: symbolic answer (2.2)", 1e3 * best_time(lambda: check("2.2", ("-a_x*b_x/b_y",
                                                                          "W*l*b_y/(a_x*(b_x**2+b_y**2))"))),
          "ms", "< 2000 ms"),
-        ("check: open design (1.4, four-bar)", 1e3 * _best(lambda: check("1.4", {
+        ("check: open design (1.4, four-bar)", 1e3 * best_time(lambda: check("1.4", {
             "crank": (2.0, (-0.112, 0.0)), "rocker": (2.0, (-0.196, 0.0))})), "ms", "< 500 ms"),
     ]
     files = sorted(str(p) for p in (ROOT / "labs" / "solutions").glob("*.ipynb"))
