@@ -75,8 +75,22 @@ def jupyterlab(tmp_path_factory):
         log.close()
 
 
+def _accept_dialogs(page) -> bool:
+    """Accept every dialog JupyterLab shows (e.g. "Select Kernel"); True if there was one."""
+    seen = False
+    for _ in range(10):
+        button = page.locator(".jp-Dialog .jp-mod-accept")
+        if not (button.count() and button.first.is_visible()):
+            break
+        button.first.click()
+        seen = True
+        page.wait_for_timeout(500)
+    return seen
+
+
 def _run_all(page) -> None:
     """Run > Run All Cells."""
+    _accept_dialogs(page)
     page.locator(".lm-MenuBar-itemLabel", has_text="Run").first.click()
     page.locator(".lm-Menu-itemLabel", has_text="Run All Cells").first.click()
 
@@ -94,9 +108,7 @@ def _wait_through_kernel_dialog(page, locator, timeout_s: float) -> None:
     deadline = time.monotonic() + timeout_s
     last_run = time.monotonic()
     while time.monotonic() < deadline:
-        dialog = page.locator(".jp-Dialog .jp-mod-accept")
-        if dialog.count() and dialog.first.is_visible():
-            dialog.first.click()
+        if _accept_dialogs(page):
             page.wait_for_selector(idle, timeout=60_000)
             _run_all(page)
             last_run = time.monotonic()
