@@ -10,9 +10,7 @@ and derived symbolically (:meth:`Design.potential_energy_symbolic`,
 """
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
-from functools import cached_property
 from typing import Mapping, NamedTuple, Sequence
 
 import numpy as np

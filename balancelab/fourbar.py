@@ -17,11 +17,10 @@ from __future__ import annotations
 import numpy as np
 
 from .design import Design
-from .elements import G, Joint, Load, Spring, _finite, _point, weight
+from .elements import Joint, Load, Spring, _finite, _point, weight
 from .kinematics import FourBarKinematics
-from .lever import link_spring
+from .lever import link_spring, min_preload_lever
 from .serial import serial_2r_min_preload
-from .lever import min_preload_lever
 
 __all__ = ["fourbar_joints", "equivalent_masses", "fourbar_counterweights", "fourbar_two_springs",
            "singh_fourbar"]

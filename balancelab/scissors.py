@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 from .design import Design
-from .elements import G, Joint, Load, Spring, SymbolicParts, _finite, weight
+from .elements import G, Joint, Spring, SymbolicParts, _finite, weight
 from .kinematics import ExplicitKinematics
 
 __all__ = ["scissors_kinematics", "scissors_lift"]

@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from .design import Design
-from .elements import G, Joint, Load, Spring, SymbolicParts, _finite, _point, weight
+from .elements import Joint, Load, Spring, SymbolicParts, _finite, _point, weight
 from .kinematics import TreeKinematics
 from .lever import link_spring
 

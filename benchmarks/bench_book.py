@@ -11,7 +11,6 @@ The cold build re-executes everything, so this benchmark takes a few minutes.
 """
 from __future__ import annotations
 
-import importlib.util
 import shutil
 import subprocess
 import sys

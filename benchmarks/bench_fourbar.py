@@ -13,7 +13,6 @@ Rows (name, value, unit, target):
 """
 from __future__ import annotations
 
-import time
 
 import numpy as np
 from timing import best_time, median_time

@@ -8,7 +8,6 @@ from pathlib import Path
 import nbformat
 import pytest
 
-import balancelab as bl
 from balancelab.check import tasks
 from balancelab.grading import GradeRow, grade_namespace, summary, write_csv
 
