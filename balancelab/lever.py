@@ -61,7 +61,8 @@ def _lever_design(name, loads, springs, *, symbolic=None, labels=None, parameter
 
 
 def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 0.0),
-                anchor_body: int = 0, anchor_origin=(0.0, 0.0), name: str = "k") -> Spring:
+                anchor_body: int = 0, anchor_origin=(0.0, 0.0), anchor_up=(0.0, 1.0),
+                name: str = "k") -> Spring:
     """ZFL spring that balances the weight of masses carried by a link turning about a pivot.
 
     A link carrying masses with first moment ``M = sum m_i p_i`` (kg m, local frame,
@@ -86,6 +87,10 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 
         Body carrying the anchor (0: ground; a link that stays vertical also works).
     anchor_origin : (float, float)
         Local point of the link where the pivot is (m); usually the origin.
+    anchor_up : (float, float)
+        The global upward direction in ``anchor_body``'s local frame (a unit vector; that
+        body must never turn). ``(0, 1)`` for the ground; ``(1, 0)`` for a link kept
+        vertical with its x-axis pointing up.
     name : str
         Label of the spring.
 
@@ -109,7 +114,10 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 
     u = M / norm
     k = G * norm / (b * c)
     ao = np.asarray(anchor_origin, dtype=float)
-    return Spring(k, 0.0, (anchor_body, (pivot[0], pivot[1] + b)),
+    up = np.asarray(_point("anchor_up", anchor_up))
+    if not np.isclose(np.hypot(*up), 1.0):
+        raise ValueError(f"anchor_up must be a unit vector, got {tuple(up)}")
+    return Spring(k, 0.0, (anchor_body, (pivot[0] + b * up[0], pivot[1] + b * up[1])),
                   (body, (ao[0] + c * u[0], ao[1] + c * u[1])), name=name)
 
 

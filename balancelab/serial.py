@@ -122,9 +122,8 @@ def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
     kin = TreeKinematics(5, joints, [[0, 0], [1, 0], [0, 1], [1, 0], [0, 0]], ("theta_1", "theta_2"),
                          _TWO_TURNS, angle_offset=[0, 0, 0, 0, math.pi / 2])
     s1 = link_spring(M1, b1, c1, body=1, name="k1")
-    s2 = link_spring(M2, b2, c2, body=2, anchor_body=4, pivot=(0.0, 0.0), name="k2")
-    # on body 4 the local x-axis points up: the anchor "b2 above the elbow" is local (b2, 0)
-    s2 = Spring(s2.k, 0.0, (4, (b2, 0.0)), s2.b, name="k2")
+    # body 4 stays vertical with its local x-axis pointing up: "b2 above the elbow" is (b2, 0)
+    s2 = link_spring(M2, b2, c2, body=2, anchor_body=4, anchor_up=(1.0, 0.0), name="k2")
     loads = [weight(1, tuple(p1), m1, "m1"), weight(2, tuple(p2), m2, "m2")]
     return Design("2R arm with a parallelogram (lecture)",
                   ("ground", "link 1", "link 2", "auxiliary link", "vertical link"), joints, kin,

@@ -202,6 +202,7 @@ def test_equivalent_masses_reproduce_coupler_centre():
     (lambda: bl.peaucellier_board(d=0.1), "too short"),
     (lambda: bl.peaucellier_board(W=(1.0, 2.0)), "seven body weights"),
     (lambda: bl.link_spring((0.0, 0.0), 0.2, 0.1), "first_moment is zero"),
+    (lambda: bl.link_spring((1.0, 0.0), 0.2, 0.1, anchor_up=(2.0, 0.0)), "unit vector"),
 ])
 def test_bad_input_is_named(call, message):
     with pytest.raises((ValueError, TypeError), match=message):
