@@ -1,52 +1,73 @@
 """balancelab: static balancing of planar linkages.
 
-Build a mechanism in a line, balance it with springs or counterweights by any method of
-the course, and let the design prove itself balanced::
+Build a mechanism, balance it with springs or counterweights by any method of the
+course, and let the design prove itself balanced::
 
     >>> import balancelab as bl
-    >>> arm = bl.serial_2r_min_preload()            # Singh & Ananthasuresh's 2R
+    >>> arm = bl.singh.serial_2r_min_preload()     # Singh & Ananthasuresh's 2R
     >>> arm.balance_report().balanced
     True
 
-Every method returns a :class:`Design`; plotting, animation, widgets and answer
-checks all take that one type. ``catalog()`` lists every worked example of the course.
-sympy is imported only when a symbolic method is first used.
+The package is layered; each layer imports only the ones above it in this list:
+
+``core``
+    loads, springs, joints, the `Kinematics` contract and the immutable :class:`Design`.
+``mechanisms``
+    the linkages (lever, 2R chain, four-bar, scissors, Peaucellier-Lipkin) and the one
+    geometry kernel.
+``methods``
+    the balancing methods, one namespace per source: :mod:`lecture <balancelab.methods.lecture>`,
+    :mod:`singh <balancelab.methods.singh>`, :mod:`lustig <balancelab.methods.lustig>`,
+    :mod:`deepak <balancelab.methods.deepak>`, :mod:`realize <balancelab.methods.realize>`;
+    each declares its worked examples in the registry.
+``viz``
+    drawings, energy plots, animations and explorers of any design.
+``course``
+    the catalog of worked examples, the gallery, the labs' answer checks, the grader.
+
+The top level re-exports the design types, the mechanisms' builders, the method
+namespaces (``bl.lecture``, ``bl.singh``, ``bl.lustig``, ``bl.deepak``, ``bl.realize``),
+``catalog`` and the viz functions. matplotlib, scipy, sympy and ipywidgets are imported
+only when something that needs them is first used.
 """
-from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy, UnreachableConfiguration
-from .elements import G, Attachment, Joint, Load, Spring, SymbolicParts, weight
-from .kinematics import ExplicitKinematics, FourBarKinematics, Kinematics, TreeKinematics
-from .lever import (generalized_lever, lacoste_lever, lever_kinematics, link_spring, min_preload_lever,
-                    single_link_counterweight, single_link_ordinary_spring, single_link_spring)
+import importlib
 
-from .serial import (free_choice_count, max_work_angle, serial_2r_base_springs, serial_2r_kinematics,
-                     serial_2r_min_preload, serial_2r_parallelogram, serial_2r_simplified,
-                     serial_2r_two_springs)
-from .fourbar import (equivalent_masses, fourbar_counterweights, fourbar_joints, fourbar_two_springs,
-                      singh_fourbar)
-from .scissors import scissors_kinematics, scissors_lift
-from .peaucellier import PeaucellierKinematics, peaucellier_board
-from . import stiffness
-from .stiffness import (InfeasibleDesign, SerialChain, balance_all_pairs, constraint_equations,
-                        lustig_table3e_case, solve, stiffness_matrix, stiffness_matrix_symbolic, synthesize)
-from .catalog import Entry, catalog
+from .core import (BALANCE_TOLERANCE, Attachment, BalanceReport, Design, Energy, G, Joint, Kinematics, Load,
+                   Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
+from .mechanisms import (ExplicitKinematics, FourBarKinematics, PeaucellierKinematics, TreeKinematics,
+                         fourbar_joints, lever_kinematics, scissors_kinematics, serial_2r_kinematics)
+from .methods import lecture, singh
+from .course.catalog import catalog
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
-_LAZY = ("plotting", "animation", "explore", "check", "grading", "labtools", "spring_fourbar",
-         "cognates", "realize")
+#: top-level names imported on first use: name -> module that defines it
+_LAZY = {
+    "lustig": "balancelab.methods.lustig", "deepak": "balancelab.methods.deepak",
+    "realize": "balancelab.methods.realize", "viz": "balancelab.viz", "course": "balancelab.course",
+    **{name: "balancelab.viz" for name in ("draw", "energy_plot", "lever_valley", "family_plot",
+                                           "cognates_plot", "animate", "animate_parameter", "explore",
+                                           "Explorer")},
+}
 
-
-_LAZY_NAMES = {"draw": "plotting", "energy_plot": "plotting", "lever_valley": "plotting",
-               "family_plot": "plotting", "cognates_plot": "plotting", "animate": "animation",
-               "animate_parameter": "animation", "Explorer": "explore"}
+__all__ = [
+    "BALANCE_TOLERANCE", "Attachment", "BalanceReport", "Design", "Energy", "G", "Joint", "Kinematics",
+    "Load", "Spring", "SymbolicParts", "UnreachableConfiguration", "gravity_load",
+    "ExplicitKinematics", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics", "fourbar_joints",
+    "lever_kinematics", "scissors_kinematics", "serial_2r_kinematics",
+    "lecture", "singh", "catalog", *_LAZY,
+]
 
 
 def __getattr__(name: str):
-    """Import the heavier submodules (matplotlib, ipywidgets, scipy) on first use."""
-    import importlib
-
+    """Import the heavier parts (scipy, matplotlib, ipywidgets) on first use."""
     if name in _LAZY:
-        return importlib.import_module(f"{__name__}.{name}")
-    if name in _LAZY_NAMES:
-        return getattr(importlib.import_module(f"{__name__}.{_LAZY_NAMES[name]}"), name)
+        module = importlib.import_module(_LAZY[name])
+        value = module if module.__name__.endswith("." + name) else getattr(module, name)
+        globals()[name] = value
+        return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

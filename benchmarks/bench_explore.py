@@ -40,8 +40,8 @@ def _latencies(explorer, design, changes: int = 20, seed: int = 0) -> np.ndarray
 def run(changes: int = 20) -> list[tuple[str, float, str, str]]:
     """Rows ``(name, value, unit, target)``: latency per catalog entry, animation size."""
     import balancelab as bl
-    from balancelab.animation import animate
-    from balancelab.explore import Explorer
+    from balancelab.viz.animation import animate
+    from balancelab.viz.explorer import Explorer
 
     rows = []
     worst_median, worst_p95 = 0.0, 0.0

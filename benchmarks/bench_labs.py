@@ -13,7 +13,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def run() -> list[tuple[str, float, str, str]]:
     """Rows ``(name, measured, unit, target)``."""
-    from balancelab.check import check
+    from balancelab.course.check import check
 
     rows = [
         ("check: numeric answer (2.1)", 1e3 * best_time(lambda: check("2.1", "196.2 N/m")), "ms", "< 5 ms"),

@@ -34,7 +34,7 @@ case "$cmd" in
             bash scripts/build_book.sh "$PY" "$@"
         else
             log "running the gallery of worked examples"
-            "$PY" -m balancelab.gallery
+            "$PY" -m balancelab.course.gallery
         fi
         ;;
     test)

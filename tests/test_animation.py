@@ -14,7 +14,7 @@ import pytest  # noqa: E402
 from PIL import Image  # noqa: E402
 
 import balancelab as bl  # noqa: E402
-from balancelab.animation import animate, animate_parameter, configuration_path  # noqa: E402
+from balancelab.viz.animation import animate, animate_parameter, configuration_path  # noqa: E402
 from test_plotting import ALL, build, two_link_arm  # noqa: E402
 
 FRAME_RE = re.compile(r'frames\[(\d+)\] = "data:image/png;base64,([^"]*)"')
@@ -48,7 +48,7 @@ def test_every_design_animates_under_2_mb_at_the_defaults(name):
 
 
 def test_frame_count_and_path_of_a_full_turn():
-    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     anim = animate(d, frames=24, fps=30)
     np.testing.assert_allclose(anim.path[:, 0], -math.pi + 2 * math.pi * np.arange(24) / 24)
     assert len(_frames(anim.to_jshtml())) == 24
@@ -85,7 +85,7 @@ def test_frames_match_a_full_redraw():
 
 
 def test_animate_rejects_bad_input():
-    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     with pytest.raises(ValueError, match="frames"):
         animate(d, frames=1)
     with pytest.raises(ValueError, match="fps"):
@@ -104,7 +104,7 @@ def test_animate_rejects_bad_input():
 
 def test_parameter_animation_rebuilds_each_design_and_shows_invalid_values():
     values = [0.0, 0.1, 0.2, 0.3, -0.1]
-    anim = animate_parameter(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values, q=[0.6],
+    anim = animate_parameter(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values, q=[0.6],
                              unit="m")
     assert [d is None for d in anim.designs] == [True, False, False, False, True]
     assert anim.messages[0] == "a_x = 0 m: a_x (m) must be > 0, got 0.0"
@@ -134,14 +134,14 @@ def test_parameter_animation_of_a_two_dof_family():
 
 def test_parameter_animation_needs_one_valid_design():
     with pytest.raises(ValueError, match="no value of a_x gives a valid design"):
-        animate_parameter(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", [0.0, -1.0])
+        animate_parameter(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", [0.0, -1.0])
     with pytest.raises(TypeError, match="callable"):
         animate_parameter(None, "a_x", [0.1])
 
 
 def test_parameter_animation_frame_for_an_unreachable_configuration():
     # with a rocker of 0.3 m the crank cannot reach 0.2 rad: that frame says so
-    anim = animate_parameter(bl.fourbar_two_springs, "rocker", [0.6, 0.3, 2.0], q=[0.2], unit="m")
+    anim = animate_parameter(bl.lecture.fourbar_two_springs, "rocker", [0.6, 0.3, 2.0], q=[0.2], unit="m")
     assert anim.designs[0] is not None and anim.messages[0] == ""
     assert anim.designs[1] is None and "cannot be reached" in anim.messages[1]
     assert anim.designs[2] is None and "cannot assemble" in anim.messages[2]

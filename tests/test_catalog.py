@@ -32,7 +32,7 @@ def test_every_entry_proves_itself(name, entry):
 
 
 def test_gallery_runs(capsys):
-    from balancelab.gallery import main
+    from balancelab.course.gallery import main
 
     assert main() == 0
     out = capsys.readouterr().out

@@ -6,19 +6,19 @@ import pytest
 import sympy as sp
 
 import balancelab as bl
-import balancelab.stiffness  # noqa: F401  (bl.stiffness)
-from balancelab.peaucellier import peaucellier_board
-from balancelab.scissors import scissors_lift
-from balancelab import check as ck
-from balancelab.check import Verdict, check, explain, tasks
-from balancelab.fourbar import fourbar_counterweights
+import balancelab.methods.lustig.stiffness  # noqa: F401  (bl.lustig)
+from balancelab.methods.singh.peaucellier import peaucellier_board
+from balancelab.methods.singh.scissors import scissors_lift
+from balancelab.course import check as ck
+from balancelab.course.check import Verdict, check, explain, tasks
+from balancelab.methods.lecture.fourbar import fourbar_counterweights
 
 # ----------------------------------------------------------------- expected answers, derived
-# through the library (an independent route from the formulas inside balancelab.check)
+# through the library (an independent route from the formulas inside balancelab.course.check)
 
 
 def _lamp_r_c():
-    return bl.single_link_counterweight(1.2, 0.45, 3.0, link_mass=0.6).parameters["r_c"]
+    return bl.lecture.single_link_counterweight(1.2, 0.45, 3.0, link_mass=0.6).parameters["r_c"]
 
 
 def _lab1_counterweights(m_c2, m_c4):
@@ -33,7 +33,7 @@ def _lab1_counterweights(m_c2, m_c4):
 
 def _equivalent():
     p = ck.LAB1_FOURBAR
-    from balancelab.fourbar import equivalent_masses
+    from balancelab.methods.lecture.fourbar import equivalent_masses
 
     c = equivalent_masses(p["r3"], p["r2"], p["r4"], p["m3"], (p["g3"], 0.0))["c"].real
     return (p["m3"] * (1 - c), p["m3"] * c)
@@ -41,7 +41,7 @@ def _equivalent():
 
 def _lever_conditions():
     """(a_y, k) of the generalized lever from Design.balance_conditions (sympy)."""
-    d = bl.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)
+    d = bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)
     W, l, ax, ay, bx, by, k = sp.symbols("W l a_x a_y b_x b_y k", positive=True)
     eqs = [sp.sympify(e.lhs).subs({s: sp.Symbol(str(s), positive=True) for s in e.lhs.free_symbols})
            for e in d.balance_conditions()]
@@ -55,7 +55,7 @@ def _lever_conditions():
 
 def _pulley_radius():
     """Bisection on the exact pulley model (a route independent of the check's root finder)."""
-    from balancelab.realize import pulley_balance_error, pulley_lever
+    from balancelab.methods.realize import pulley_balance_error, pulley_lever
 
     lo, hi = 1e-5, 0.05
     for _ in range(40):
@@ -66,7 +66,7 @@ def _pulley_radius():
 
 
 def _approximate_spring(**kw):
-    from balancelab.realize import approximate_lever
+    from balancelab.methods.realize import approximate_lever
 
     p = approximate_lever(2.0, 0.5, free_length=0.1, **kw).parameters
     return {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])}
@@ -89,9 +89,9 @@ RIGHT = {
     "1.2": lambda: sp.sympify("r*(2*m + m_l)/(2*m_c)"),
     "1.3": _equivalent,
     "1.4": lambda: _lab1_counterweights(2.0, 2.0),
-    "2.1": lambda: bl.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters["k"],
+    "2.1": lambda: bl.lecture.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters["k"],
     "2.2": _lever_conditions,
-    "2.3": lambda: bl.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters["PE"],
+    "2.3": lambda: bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters["PE"],
     "2.4": lambda: {"k": 300.0, "a": (0.3, 0.0), "b": (0.0, 0.2)},
     "3.1": _pulley_radius,
     "3.2": lambda: -400.0 * 0.05 / 250.0,
@@ -99,7 +99,7 @@ RIGHT = {
     "4.1": _parallelogram_rates,
     "4.2": lambda: float(np.hypot(10.0 * 1.0 + 20.0 * 1.5, 10.0 * 0.5) + 20.0 * 2.0),
     "4.3": lambda: {"a_x": (1.4, 1.5, -1.5)},
-    "4.4": lambda: bl.stiffness.lustig_table3e_case(1).parameters["k1"],
+    "4.4": lambda: bl.lustig.lustig_table3e_case(1).parameters["k1"],
     "5.1": _crank_rate,
     "5.2": lambda: float(np.hypot(40.0, 5.0) + 40.0 + 10.0 * 0.5),
     "5.3": lambda: {"base": "A", "h": 0.15},
@@ -261,14 +261,14 @@ def test_open_design_checked_by_physics_lab1():
 @pytest.mark.parametrize("free", [(0.3, 0.0, 0.2), (0.3, 0.05, 0.25), (0.25, -0.1, 0.3), (0.4, 0.0, 0.15)])
 def test_open_design_many_right_answers_lab2(free):
     ax, bx, by = free
-    d = bl.generalized_lever(30.0, 0.6, ax, bx, by)
+    d = bl.singh.generalized_lever(30.0, 0.6, ax, bx, by)
     p = d.parameters
     v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
     assert v.correct, str(v)
 
 
 def test_open_design_lab2_constraints_and_balance():
-    d = bl.generalized_lever(30.0, 0.6, 0.1, 0.0, 0.2)  # k = 900 N/m: balanced, too stiff
+    d = bl.singh.generalized_lever(30.0, 0.6, 0.1, 0.0, 0.2)  # k = 900 N/m: balanced, too stiff
     p = d.parameters
     v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
     assert not v.correct and "k above" in v.message and "balanced" in v.message
@@ -298,7 +298,7 @@ def test_verdict_prints_and_is_truthy():
 
 
 def test_open_designs_labs_3_to_6_physics():
-    import balancelab.serial as serial
+    import balancelab.methods.singh.serial as serial
 
     # lab 3: several ordinary springs pass; the ZFL rate with a free length does not
     assert check("3.3", _approximate_spring()).correct
@@ -329,9 +329,9 @@ def test_open_designs_labs_3_to_6_physics():
 def test_docstring_examples_of_the_lab_modules_run():
     import doctest
 
-    import balancelab.grading
-    import balancelab.labtools
+    import balancelab.course.grading
+    import balancelab.course.labtools
 
-    for mod in (ck, balancelab.labtools, balancelab.grading):
+    for mod in (ck, balancelab.course.labtools, balancelab.course.grading):
         result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, mod.__name__

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from balancelab import cognates as cg
-from balancelab import spring_fourbar as sf
+from balancelab.methods.deepak import roberts as cg
+from balancelab.methods.deepak import spring_fourbar as sf
 from conftest import assert_exactly_balanced
 
 FB = sf.example_fourbar()

@@ -12,12 +12,12 @@ import pytest  # noqa: E402
 from PIL import Image  # noqa: E402
 
 import balancelab as bl  # noqa: E402
-from balancelab.explore import Explorer, explore, scaled_design_factory  # noqa: E402
+from balancelab.viz.explorer import Explorer, explore, scaled_design_factory  # noqa: E402
 from test_plotting import ALL, build, two_link_arm  # noqa: E402
 
 
 def lever(a_x: float = 0.2, b_y: float = 0.3) -> bl.Design:
-    return bl.lacoste_lever(10.0, 0.5, a_x, b_y)
+    return bl.singh.lacoste_lever(10.0, 0.5, a_x, b_y)
 
 
 def pixels(png: bytes) -> np.ndarray:
@@ -78,7 +78,7 @@ def test_blitted_picture_equals_a_full_redraw():
 
 
 def test_fourbar_that_cannot_assemble_keeps_the_last_picture():
-    ex = explore(bl.fourbar_two_springs, {"rocker": (0.2, 2.0, 0.05)}, q=[0.2])
+    ex = explore(bl.lecture.fourbar_two_springs, {"rocker": (0.2, 2.0, 0.05)}, q=[0.2])
     assert ex.values["rocker"] == 0.6
     assert ex.set(rocker=0.9) and ex.report.balanced
     good = ex.png
@@ -93,7 +93,7 @@ def test_fourbar_that_cannot_assemble_keeps_the_last_picture():
 
 
 def test_unreachable_configuration_is_refused_with_a_message():
-    ex = explore(bl.scissors_lift, {"a": (0.2, 0.8, 0.05)})
+    ex = explore(bl.singh.scissors_lift, {"a": (0.2, 0.8, 0.05)})
     hi = ex.design.q_range[0, 1]
     before = ex.png
     assert not ex.set(theta=hi + 0.5)
@@ -121,7 +121,7 @@ def test_unexpected_errors_become_messages():
 
 
 def test_exploring_a_design_scales_its_springs():
-    d = bl.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
     ex = explore(d)
     assert list(ex.params) == ["stiffness"] and ex.values["stiffness"] == 1.0
     assert ex.report.balanced
@@ -129,13 +129,13 @@ def test_exploring_a_design_scales_its_springs():
     assert not ex.report.balanced
     assert ex.report_text.splitlines()[0].startswith(f"{d.name}: NOT balanced")
     assert ex.design.springs[0].k == pytest.approx(1.001 * d.springs[0].k)
-    f, params = scaled_design_factory(bl.single_link_counterweight(2.0, 0.5, 4.0))
+    f, params = scaled_design_factory(bl.lecture.single_link_counterweight(2.0, 0.5, 4.0))
     assert params == {"counterweight": (0.5, 1.5, 0.01, 1.0)}
     assert f(counterweight=1.5).loads[-1].mass == pytest.approx(6.0)
 
 
 def test_widget_sliders_drive_the_callback():
-    ex = explore(bl.fourbar_two_springs, {"rocker": (0.2, 2.0, 0.05)})
+    ex = explore(bl.lecture.fourbar_two_springs, {"rocker": (0.2, 2.0, 0.05)})
     box = ex.widget
     rocker, theta = ex._sliders["rocker"], ex._q_sliders["theta"]
     assert rocker in box.children and theta in box.children

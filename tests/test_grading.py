@@ -8,12 +8,12 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from balancelab.check import tasks
-from balancelab.grading import GradeRow, grade_namespace, summary, write_csv
+from balancelab.course.check import tasks
+from balancelab.course.grading import GradeRow, grade_namespace, summary, write_csv
 
 ROOT = Path(__file__).resolve().parent.parent
 
-HEADER = "import balancelab as bl\nfrom balancelab.check import check\n"
+HEADER = "import balancelab as bl\nfrom balancelab.course.check import check\n"
 
 
 def _nb(lab, *sources):
@@ -31,9 +31,9 @@ def _write(folder, name, nb):
     return p
 
 
-K_LAMP = "k_lamp = bl.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters['k']"
+K_LAMP = "k_lamp = bl.lecture.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters['k']"
 LEVER_SPRING = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
-ENERGY = "lever_energy = bl.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
+ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
 
 
 @pytest.fixture(scope="module")
@@ -49,7 +49,7 @@ def graded(tmp_path_factory):
     _write(sub, "group/gina_lab1.ipynb", _nb("lab1", "r_c = '22.5 cm'", "m_equivalent = (0.72, 0.48)"))
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
     out = sub.parent / "grades.csv"
-    proc = subprocess.run([sys.executable, "-m", "balancelab.grading", str(sub), "--out", str(out),
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
                            "--cell-timeout", "8", "--notebook-timeout", "120"],
                           capture_output=True, text=True, timeout=600, cwd=ROOT)
     after = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
@@ -127,6 +127,6 @@ def test_csv_and_summary_from_rows(tmp_path):
 
 
 def test_missing_folder_is_a_clear_error(tmp_path):
-    proc = subprocess.run([sys.executable, "-m", "balancelab.grading", str(tmp_path / "nope")],
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(tmp_path / "nope")],
                           capture_output=True, text=True, cwd=ROOT)
     assert proc.returncode == 2 and "no such folder" in proc.stderr

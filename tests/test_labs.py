@@ -8,9 +8,9 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from balancelab import labtools
-from balancelab.check import tasks
-from balancelab.grading import grade_notebook
+from balancelab.course import labtools
+from balancelab.course.check import tasks
+from balancelab.course.grading import grade_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 SOLUTIONS = ROOT / "labs" / "solutions"
@@ -63,7 +63,7 @@ def test_committed_student_versions_are_exactly_what_the_generator_writes():
     assert labtools.stale(SOLUTIONS, STUDENT) == []
     for s in SOLUTION_FILES:
         assert (STUDENT / s.name).read_text(encoding="utf-8") == labtools.student_text(s)
-    proc = subprocess.run([sys.executable, "-m", "balancelab.labtools", "check"], capture_output=True,
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.labtools", "check"], capture_output=True,
                           text=True, cwd=ROOT)
     assert proc.returncode == 0, proc.stdout + proc.stderr
 
@@ -129,10 +129,10 @@ def test_generate_and_check_commands(tmp_path):
     src.mkdir()
     nbformat.write(_read(SOLUTION_FILES[0]), src / "a_lab.ipynb")
     dst = tmp_path / "stu"
-    r = subprocess.run([sys.executable, "-m", "balancelab.labtools", "check", "--solutions", str(src),
+    r = subprocess.run([sys.executable, "-m", "balancelab.course.labtools", "check", "--solutions", str(src),
                         "--student", str(dst)], capture_output=True, text=True)
     assert r.returncode == 1 and "stale" in r.stdout
-    r = subprocess.run([sys.executable, "-m", "balancelab.labtools", "generate", "--solutions", str(src),
+    r = subprocess.run([sys.executable, "-m", "balancelab.course.labtools", "generate", "--solutions", str(src),
                         "--student", str(dst)], capture_output=True, text=True)
     assert r.returncode == 0 and (dst / "a_lab.ipynb").exists()
     assert labtools.stale(src, dst) == []

@@ -12,17 +12,17 @@ import balancelab as bl
 from conftest import assert_exactly_balanced, assert_symbolic_matches_numeric
 
 BALANCED_FACTORIES = [
-    lambda: bl.single_link_counterweight(2.0, 0.5, 4.0, link_mass=0.5),
-    lambda: bl.single_link_spring(2.0, 0.5, 0.3, 0.2),
-    lambda: bl.single_link_spring(2.0, 0.5, 0.3, 0.2, arrangement="below"),
-    lambda: bl.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3),
-    lambda: bl.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3),
-    lambda: bl.min_preload_lever(10.0, 0.5, 0.5, 0.1),
-    bl.fourbar_counterweights, bl.fourbar_two_springs, bl.singh_fourbar,
-    bl.serial_2r_parallelogram, bl.serial_2r_base_springs, bl.serial_2r_simplified,
-    bl.serial_2r_min_preload, bl.serial_2r_two_springs,
-    lambda: bl.serial_2r_min_preload(p1=(1.0, -0.5)),
-    bl.scissors_lift, lambda: bl.scissors_lift(l10=0.3, payload=0.0), bl.peaucellier_board,
+    lambda: bl.lecture.single_link_counterweight(2.0, 0.5, 4.0, link_mass=0.5),
+    lambda: bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2),
+    lambda: bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2, arrangement="below"),
+    lambda: bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3),
+    lambda: bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3),
+    lambda: bl.singh.min_preload_lever(10.0, 0.5, 0.5, 0.1),
+    bl.lecture.fourbar_counterweights, bl.lecture.fourbar_two_springs, bl.singh.singh_fourbar,
+    bl.lecture.serial_2r_parallelogram, bl.lecture.serial_2r_base_springs, bl.singh.serial_2r_simplified,
+    bl.singh.serial_2r_min_preload, bl.singh.serial_2r_two_springs,
+    lambda: bl.singh.serial_2r_min_preload(p1=(1.0, -0.5)),
+    bl.singh.scissors_lift, lambda: bl.singh.scissors_lift(l10=0.3, payload=0.0), bl.singh.peaucellier_board,
 ]
 
 
@@ -46,7 +46,7 @@ def test_loops_close(factory):
 
 # ---------------------------------------------------------------- published numbers
 def test_singh_fourbar_numbers_sec_3a():
-    p = bl.singh_fourbar().parameters
+    p = bl.singh.singh_fourbar().parameters
     assert round(p["b_x1"], 3) == 0.124
     assert round(p["b_y1"], 4) == 0.9923
     assert round(p["b_x2"], 4) == 0.1861 and round(p["b_x3"], 4) == 0.1861
@@ -58,7 +58,7 @@ def test_singh_fourbar_numbers_sec_3a():
 
 
 def test_peaucellier_numbers_sec_3b():
-    p = bl.peaucellier_board().parameters
+    p = bl.singh.peaucellier_board().parameters
     assert round(p["k1"], 2) == 45.88
     assert round(p["k2"], 2) == 33.02 and p["k3"] == p["k2"]
     assert round(p["a_x2"], 3) == 0.468 and p["a_x3"] == -p["a_x2"]
@@ -68,7 +68,7 @@ def test_peaucellier_numbers_sec_3b():
 
 
 def test_peaucellier_output_is_a_vertical_straight_line():
-    d = bl.peaucellier_board()
+    d = bl.singh.peaucellier_board()
     q = np.linspace(*d.q_range[0], 401)[1:-1]
     P = d.world_points(q, [(6, (d.kinematics.s, 0.0)), (7, (d.kinematics.s, 0.0))])
     np.testing.assert_allclose(P[:, 0, 0], d.parameters["line_x"], atol=1e-12)
@@ -79,30 +79,30 @@ def test_peaucellier_output_is_a_vertical_straight_line():
 
 
 def test_free_choices_table_2():
-    rows = [bl.free_choice_count(n) for n in (1, 2, 3, 4)]
+    rows = [bl.singh.free_choice_count(n) for n in (1, 2, 3, 4)]
     assert [(r["springs"], r["parameters"], r["equations"], r["free"]) for r in rows] == [
         (1, 5, 2, 2), (3, 15, 6, 6), (5, 25, 10, 10), (7, 35, 14, 14)]
     with pytest.raises(ValueError, match="N must be"):
-        bl.free_choice_count(0)
+        bl.singh.free_choice_count(0)
 
 
 def test_lever_eqs_2_3_9():
-    d = bl.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
     assert d.parameters["k"] == pytest.approx(10 * 0.5 / (0.2 * 0.3))
     assert d.balance_report().energy == pytest.approx(d.parameters["PE"], rel=1e-12)
-    m = bl.min_preload_lever(10.0, 0.5, 0.3, -0.2)
+    m = bl.singh.min_preload_lever(10.0, 0.5, 0.3, -0.2)
     assert m.balance_report().energy == pytest.approx(10.0 * 0.5, rel=1e-12)  # PE_min = W l
 
 
 def test_lecture_single_link_formula():
-    d = bl.single_link_spring(mass=2.0, r=0.5, b=0.3, c=0.2)
+    d = bl.lecture.single_link_spring(mass=2.0, r=0.5, b=0.3, c=0.2)
     assert d.parameters["k"] == pytest.approx(2.0 * 9.81 * 0.5 / (0.3 * 0.2))
 
 
 def test_scissors_conditions_eqs_54_to_56():
     import sympy as sp
 
-    d = bl.scissors_lift()
+    d = bl.singh.scissors_lift()
     eqs = d.balance_conditions()
     k1, k2, l10, l20, a, g = sp.symbols("k_1 k_2 l_10 l_20 a g", positive=True)
     m = {i: sp.Symbol(f"m_{i}", positive=True) for i in (2, 3, 5, 6, 7, 8)}
@@ -117,20 +117,20 @@ def test_scissors_conditions_eqs_54_to_56():
 
 
 def test_scissors_min_preload_is_least_energy():
-    energies = {l10: bl.scissors_lift(l10=l10).balance_report().energy for l10 in (0.3, 0.5, 0.8)}
+    energies = {l10: bl.singh.scissors_lift(l10=l10).balance_report().energy for l10 in (0.3, 0.5, 0.8)}
     assert energies[0.5] < energies[0.3] and energies[0.5] < energies[0.8]
 
 
 def test_scissors_spring_2_must_be_zfl():
-    d = bl.scissors_lift()
+    d = bl.singh.scissors_lift()
     s = d.springs[1]
     bad = d.replace(springs=[d.springs[0], bl.Spring(s.k, 0.01, s.a, s.b)])
     assert not bad.balance_report().balanced
 
 
 def test_min_preload_energy_equals_max_external_work():
-    cases = [(bl.serial_2r_min_preload(), None), (bl.serial_2r_min_preload(p1=(1.0, -0.5)), None),
-             (bl.min_preload_lever(3, 2, 1), [math.pi / 2])]
+    cases = [(bl.singh.serial_2r_min_preload(), None), (bl.singh.serial_2r_min_preload(p1=(1.0, -0.5)), None),
+             (bl.singh.min_preload_lever(3, 2, 1), [math.pi / 2])]
     for d, q_star in cases:
         q_star = q_star or [d.parameters["theta_star"], math.pi / 2]
         e_star = d.potential_energy(np.array(q_star))
@@ -141,22 +141,22 @@ def test_min_preload_energy_equals_max_external_work():
 
 
 def test_eq35_uses_atan2():
-    th = bl.max_work_angle(10, 20, (1.0, -0.5), 1.5)
+    th = bl.singh.max_work_angle(10, 20, (1.0, -0.5), 1.5)
     assert math.pi / 2 < th < math.pi  # a plain arctan would give a negative angle
-    d = bl.serial_2r_min_preload(p1=(1.0, -0.5))
+    d = bl.singh.serial_2r_min_preload(p1=(1.0, -0.5))
     q = np.array([[th, math.pi / 2]])
     assert d.potential_energy(q).spring[0] == pytest.approx(0.0, abs=1e-12)
 
 
 def test_two_spring_2r_satisfies_eq50():
-    d = bl.serial_2r_two_springs()
+    d = bl.singh.serial_2r_two_springs()
     p = d.parameters
     assert p["a_x2"] * p["a_x3"] == pytest.approx(-1.5 * 20 * 2.0 * p["b_x2"] / (10 * 0.5))
     assert len(d.springs) == 2
 
 
 def test_counterweights_keep_the_centre_of_mass_still():
-    d = bl.fourbar_counterweights()
+    d = bl.lecture.fourbar_counterweights()
     q = d.sample(300)
     pos = d.world_points(q, [(ld.body, ld.point) for ld in d.loads])
     masses = np.array([ld.mass for ld in d.loads])
@@ -166,8 +166,8 @@ def test_counterweights_keep_the_centre_of_mass_still():
 
 def test_equivalent_masses_reproduce_coupler_centre():
     # U3 = (1 - c) Z2 + c Z4 + c Z1 (lecture), with A the crank pivot and B the rocker pivot
-    d = bl.fourbar_counterweights()
-    em = bl.equivalent_masses(0.8, 0.3, 0.6, 2.0, (0.4, 0.1))
+    d = bl.lecture.fourbar_counterweights()
+    em = bl.lecture.equivalent_masses(0.8, 0.3, 0.6, 2.0, (0.4, 0.1))
     q = d.sample(50)
     g3 = d.world_points(q, [(2, (0.4, 0.1))])[:, 0]
     on_crank, on_rocker = np.moveaxis(d.world_points(q, [(1, em["crank_point"]), (3, em["rocker_point"])]), 1, 0)
@@ -178,31 +178,31 @@ def test_equivalent_masses_reproduce_coupler_centre():
 
 # ---------------------------------------------------------------- bad input
 @pytest.mark.parametrize("call, message", [
-    (lambda: bl.generalized_lever(10, 0.5, 0.0, 0.1, 0.3), "a_x must be non-zero"),
-    (lambda: bl.generalized_lever(10, 0.5, 0.2, 0.1, 0.0), "b_y must be non-zero"),
-    (lambda: bl.generalized_lever(10, 0.5, 0.2, 0.1, -0.3), "same sign"),
-    (lambda: bl.lacoste_lever(weight=-1, l=0.5, a_x=0.2, b_y=0.3), "weight W"),
-    (lambda: bl.lacoste_lever(weight=1, l=0.0, a_x=0.2, b_y=0.3), "l"),
-    (lambda: bl.single_link_spring(0.0, 0.5, 0.3, 0.2), "mass"),
-    (lambda: bl.single_link_spring(1.0, 0.5, 0.3, 0.2, arrangement="side"), "arrangement"),
-    (lambda: bl.serial_2r_simplified(b_y2=1.0, b_y3=1.0), "b_y2 == b_y3"),
-    (lambda: bl.serial_2r_simplified(a_x2=0.0), "a_x2 == 0"),
-    (lambda: bl.serial_2r_min_preload(a_x=(1.0, 2.0, 2.0)), "a_x2 == a_x3"),
-    (lambda: bl.serial_2r_min_preload(a_x=(0.0, 2.0, -2.0)), "non-zero"),
-    (lambda: bl.serial_2r_min_preload(a_x=(1.0, 2.0, 1.0)), "not positive"),
-    (lambda: bl.serial_2r_min_preload(a_x=(1.0, 2.0)), "three numbers"),
-    (lambda: bl.serial_2r_two_springs(p1=(1.0, 0.0)), "p_y1 must be non-zero"),
-    (lambda: bl.serial_2r_parallelogram(m1=-1.0), "m1"),
-    (lambda: bl.singh_fourbar(crank=1.5, coupler=0.1, rocker=0.1, ground=4.0), "cannot assemble"),
-    (lambda: bl.fourbar_counterweights(B=(0.0, 0.0)), "coincide"),
-    (lambda: bl.fourbar_counterweights(counter_masses=(0.0, 1.0)), "counter_masses"),
-    (lambda: bl.scissors_lift(a=0.0), "arm length"),
-    (lambda: bl.scissors_lift(l10=-0.1), "l10"),
-    (lambda: bl.peaucellier_board(s=0.8), "shorter than the long arms"),
-    (lambda: bl.peaucellier_board(d=0.1), "too short"),
-    (lambda: bl.peaucellier_board(W=(1.0, 2.0)), "seven body weights"),
-    (lambda: bl.link_spring((0.0, 0.0), 0.2, 0.1), "first_moment is zero"),
-    (lambda: bl.link_spring((1.0, 0.0), 0.2, 0.1, anchor_up=(2.0, 0.0)), "unit vector"),
+    (lambda: bl.singh.generalized_lever(10, 0.5, 0.0, 0.1, 0.3), "a_x must be non-zero"),
+    (lambda: bl.singh.generalized_lever(10, 0.5, 0.2, 0.1, 0.0), "b_y must be non-zero"),
+    (lambda: bl.singh.generalized_lever(10, 0.5, 0.2, 0.1, -0.3), "same sign"),
+    (lambda: bl.singh.lacoste_lever(weight=-1, l=0.5, a_x=0.2, b_y=0.3), "weight W"),
+    (lambda: bl.singh.lacoste_lever(weight=1, l=0.0, a_x=0.2, b_y=0.3), "l"),
+    (lambda: bl.lecture.single_link_spring(0.0, 0.5, 0.3, 0.2), "mass"),
+    (lambda: bl.lecture.single_link_spring(1.0, 0.5, 0.3, 0.2, arrangement="side"), "arrangement"),
+    (lambda: bl.singh.serial_2r_simplified(b_y2=1.0, b_y3=1.0), "b_y2 == b_y3"),
+    (lambda: bl.singh.serial_2r_simplified(a_x2=0.0), "a_x2 == 0"),
+    (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0, 2.0)), "a_x2 == a_x3"),
+    (lambda: bl.singh.serial_2r_min_preload(a_x=(0.0, 2.0, -2.0)), "non-zero"),
+    (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0, 1.0)), "not positive"),
+    (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0)), "three numbers"),
+    (lambda: bl.singh.serial_2r_two_springs(p1=(1.0, 0.0)), "p_y1 must be non-zero"),
+    (lambda: bl.lecture.serial_2r_parallelogram(m1=-1.0), "m1"),
+    (lambda: bl.singh.singh_fourbar(crank=1.5, coupler=0.1, rocker=0.1, ground=4.0), "cannot assemble"),
+    (lambda: bl.lecture.fourbar_counterweights(B=(0.0, 0.0)), "coincide"),
+    (lambda: bl.lecture.fourbar_counterweights(counter_masses=(0.0, 1.0)), "counter_masses"),
+    (lambda: bl.singh.scissors_lift(a=0.0), "arm length"),
+    (lambda: bl.singh.scissors_lift(l10=-0.1), "l10"),
+    (lambda: bl.singh.peaucellier_board(s=0.8), "shorter than the long arms"),
+    (lambda: bl.singh.peaucellier_board(d=0.1), "too short"),
+    (lambda: bl.singh.peaucellier_board(W=(1.0, 2.0)), "seven body weights"),
+    (lambda: bl.lecture.link_spring((0.0, 0.0), 0.2, 0.1), "first_moment is zero"),
+    (lambda: bl.lecture.link_spring((1.0, 0.0), 0.2, 0.1, anchor_up=(2.0, 0.0)), "unit vector"),
 ])
 def test_bad_input_is_named(call, message):
     with pytest.raises((ValueError, TypeError), match=message):
@@ -219,7 +219,7 @@ SETTINGS = settings(max_examples=30, deadline=None, suppress_health_check=[Healt
 @SETTINGS
 @given(W=weights, l=lengths, a_x=lengths, b_x=st.floats(-2, 2), b_y=lengths)
 def test_generalized_lever_always_balanced(W, l, a_x, b_x, b_y):
-    d = bl.generalized_lever(W, l, a_x, b_x, b_y)
+    d = bl.singh.generalized_lever(W, l, a_x, b_x, b_y)
     r = d.balance_report(n=300)
     assert r.balanced, r
     assert r.energy == pytest.approx(W * l / (2 * a_x * b_y) * (a_x ** 2 + b_y ** 2), rel=1e-9)  # eq. 17
@@ -228,7 +228,7 @@ def test_generalized_lever_always_balanced(W, l, a_x, b_x, b_y):
 @SETTINGS
 @given(W=weights, l=lengths, a_x=lengths, a_y=st.floats(-2, 2))
 def test_min_preload_lever_energy_is_wl(W, l, a_x, a_y):
-    r = bl.min_preload_lever(W, l, a_x, a_y).balance_report(n=300)
+    r = bl.singh.min_preload_lever(W, l, a_x, a_y).balance_report(n=300)
     assert r.balanced and r.energy == pytest.approx(W * l, rel=1e-9)
 
 
@@ -237,7 +237,7 @@ def test_min_preload_lever_energy_is_wl(W, l, a_x, a_y):
        a1=lengths, a2=lengths, a3=lengths)
 def test_min_preload_2r_always_balanced(W1, W2, px1, py1, px2, l, a1, a2, a3):
     try:
-        d = bl.serial_2r_min_preload(W1, W2, (px1, py1), px2, l, (a1, a2, -a3))
+        d = bl.singh.serial_2r_min_preload(W1, W2, (px1, py1), px2, l, (a1, a2, -a3))
     except ValueError as err:  # an infeasible free choice is reported, never returned
         assert "not positive" in str(err)
         return
@@ -251,7 +251,7 @@ def test_min_preload_2r_always_balanced(W1, W2, px1, py1, px2, l, a1, a2, a3):
 @given(a=st.floats(0.1, 2.0), arm=st.floats(0.1, 5), slider=st.floats(0.05, 2), plat=st.floats(0.1, 5),
        payload=st.floats(0.0, 20), l10=st.floats(0.05, 3.0))
 def test_scissors_always_balanced(a, arm, slider, plat, payload, l10):
-    d = bl.scissors_lift(a, arm, slider, plat, payload, l10)
+    d = bl.singh.scissors_lift(a, arm, slider, plat, payload, l10)
     assert d.balance_report(n=300).balanced
 
 
@@ -262,7 +262,7 @@ def test_gravity_fourbars_always_balanced(r2, r3, r4, g, cx, cy, branch):
     geom = dict(A=(0.0, 0.0), B=(g, 0.0), crank=r2, coupler=r3, rocker=r4, branch=branch,
                 p=((r2 / 2, 0.0), (cx * r3, cy * r3), (r4 / 2, 0.0)))
     try:
-        designs = [bl.fourbar_counterweights(**geom), bl.fourbar_two_springs(**geom)]
+        designs = [bl.lecture.fourbar_counterweights(**geom), bl.lecture.fourbar_two_springs(**geom)]
     except ValueError as err:
         assert "cannot assemble" in str(err)
         return

@@ -14,8 +14,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import balancelab as bl  # noqa: E402
-from balancelab import plotting as P  # noqa: E402
-from balancelab.elements import G, Joint, Spring, weight  # noqa: E402
+from balancelab.viz import plotting as P  # noqa: E402
+from balancelab.core.elements import G, Joint, Spring, gravity_load  # noqa: E402
 
 
 # ----------------------------------------------------------------- test designs
@@ -38,7 +38,7 @@ def two_link_arm(W1: float = 10.0, W2: float = 5.0, l1: float = 0.6, p1: float =
     joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (l1, 0.0), 2, (0.0, 0.0))]
     kin = bl.TreeKinematics(3, joints, [[0, 0], [1, 0], [0, 1]], ("theta_1", "theta_2"),
                             [(-math.pi, math.pi), (-math.pi, math.pi)])
-    loads = [weight(1, (p1, 0.0), W1 / G, "W1"), weight(2, (p2, 0.0), W2 / G, "W2")]
+    loads = [gravity_load(1, (p1, 0.0), W1 / G, "W1"), gravity_load(2, (p2, 0.0), W2 / G, "W2")]
     springs = [Spring(k1, 0.0, (0, (0.0, b1)), (1, (a1, 0.0)), "k1"),
                Spring(k2, 0.0, (0, (0.0, b2)), (2, (p2, 0.0)), "k2"),
                Spring(k3, 0.0, (1, (l1 / 2, 0.0)), (2, (-c2, 0.0)), "k3")]
@@ -49,7 +49,7 @@ def two_link_arm(W1: float = 10.0, W2: float = 5.0, l1: float = 0.6, p1: float =
 
 def pulley_lever() -> bl.Design:
     """The lecture's single link whose ZFL spring is a string over a pulley at the anchor."""
-    d = bl.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
     s = d.springs[0]
     return d.replace(name="single link, string over a pulley",
                      springs=[Spring(s.k, 0.0, s.a, s.b, name="k", realization="pulley")])
@@ -170,7 +170,7 @@ def test_update_moves_artists_like_a_fresh_drawing():
 
 
 def test_update_with_a_new_design_of_another_structure_rebuilds():
-    ax = P.draw(bl.lacoste_lever(10.0, 0.5, 0.2, 0.3), [0.4])
+    ax = P.draw(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), [0.4])
     dr = ax.drawing
     arm = two_link_arm()
     dr.update([0.1, 0.5], arm)
@@ -179,7 +179,7 @@ def test_update_with_a_new_design_of_another_structure_rebuilds():
 
 
 def test_ternary_link_is_a_plate_through_its_three_points():
-    d = bl.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)  # a = (0.2, -0.0667) is off the lever's axis
+    d = bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)  # a = (0.2, -0.0667) is off the lever's axis
     q = [0.3]
     poly = P.draw(d, q).drawing.links[1]
     outline = poly.get_xy()[:-1]
@@ -190,8 +190,8 @@ def test_ternary_link_is_a_plate_through_its_three_points():
 
 
 def test_zfl_finite_and_pulley_springs_look_different():
-    zfl = P.draw(bl.single_link_spring(2.0, 0.5, 0.3, 0.2)).drawing.springs[0]
-    ordinary = P.draw(bl.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)).drawing.springs[0]
+    zfl = P.draw(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)).drawing.springs[0]
+    ordinary = P.draw(bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)).drawing.springs[0]
     assert zfl.get_linestyle() == "-"
     assert ordinary.get_linestyle() != "-"
     assert zfl.get_color() != ordinary.get_color()
@@ -203,7 +203,7 @@ def test_zfl_finite_and_pulley_springs_look_different():
 
 
 def test_counterweights_are_discs_and_weights_arrows():
-    d = bl.single_link_counterweight(2.0, 0.5, 4.0)
+    d = bl.lecture.single_link_counterweight(2.0, 0.5, 4.0)
     dr = P.draw(d, [0.0]).drawing
     kinds = [type(a).__name__ for a in dr.loads]
     assert kinds == ["FancyArrowPatch", "Circle"]
@@ -215,7 +215,7 @@ def test_palette_is_okabe_ito():
 
 
 def test_draw_rejects_bad_input():
-    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     with pytest.raises(TypeError, match="balancelab.Design"):
         P.draw("lever")
     with pytest.raises(ValueError, match="q must hold 1 angle"):
@@ -264,7 +264,7 @@ def test_energy_plot_shows_the_designs_energy(name):
 
 
 def test_energy_plot_marks_a_configuration():
-    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     ax = P.energy_plot(d, q=[0.5])
     x, y = ax.energy.marker.get_data()
     assert x[0] == pytest.approx(np.degrees(0.5))
@@ -272,7 +272,7 @@ def test_energy_plot_marks_a_configuration():
 
 
 def test_counts_and_energy_limits_refuse_nonsense():
-    d = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     for n in (0, 1, 2.5, True):
         with pytest.raises(ValueError, match="n must be an integer >= 2"):
             P.energy_plot(d, n=n)
@@ -291,11 +291,11 @@ def test_counts_and_energy_limits_refuse_nonsense():
 
 
 def test_report_summary_names_verdict_and_residual():
-    rep = bl.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05).balance_report()
+    rep = bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05).balance_report()
     text = P.report_summary(rep)
     assert text.startswith("NOT balanced")
     assert f"{rep.residual * rep.scale:.3g} J/rad" in text
-    assert P.report_summary(bl.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report()).startswith("balanced")
+    assert P.report_summary(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report()).startswith("balanced")
 
 
 # ---------------------------------------------------------------- design spaces
@@ -304,7 +304,7 @@ def test_lever_valley_is_the_balanced_energy_of_the_lever():
     ax = P.lever_valley(W, l, (0.1, 0.6), (0.1, 0.6), n=26)
     A, B, PE = ax.valley
     for i, j in [(0, 0), (3, 17), (25, 4), (12, 12)]:
-        d = bl.lacoste_lever(W, l, A[i, j], B[i, j])
+        d = bl.singh.lacoste_lever(W, l, A[i, j], B[i, j])
         assert d.balance_report().balanced
         assert float(d.potential_energy([0.7]).total) == pytest.approx(PE[i, j], rel=1e-12)
     diag = np.diag(PE)  # a_x = b_y: the valley of minima, PE = W l (Singh eq. 9)
@@ -326,7 +326,7 @@ def test_lever_valley_surface_and_bad_input():
 
 def test_family_plot_of_designs():
     values = [0.0, 0.1, 0.2, 0.3, 0.4]  # 0 is invalid (a_x must be > 0)
-    ax1, ax2 = P.family_plot(lambda a_x: bl.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values,
+    ax1, ax2 = P.family_plot(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values,
                              q=[0.4], points=["a"])
     fam = ax1.family
     np.testing.assert_allclose(fam["values"], values[1:])
@@ -339,7 +339,7 @@ def test_family_plot_of_designs():
 
 def test_family_plot_with_springs_that_come_and_go():
     def factory(n):
-        d = bl.single_link_spring(2.0, 0.5, 0.3, 0.2)
+        d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
         if n < 1:
             return d.replace(springs=[])  # a bare link: nothing named k
         return d
@@ -366,8 +366,8 @@ def test_family_plot_of_dicts_and_errors():
 
 def test_cognates_plot_traces_the_named_point():
     # two levers with different spring attachments carry the load on one and the same circle
-    a = bl.lacoste_lever(10.0, 0.5, 0.2, 0.3)
-    b = bl.lacoste_lever(10.0, 0.5, 0.4, 0.1)
+    a = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    b = bl.singh.lacoste_lever(10.0, 0.5, 0.4, 0.1)
     ax = P.cognates_plot([a, b], point="p", n=91)
     for curve in ax.curves:
         np.testing.assert_allclose(np.hypot(*curve.T), 0.5, rtol=1e-12)

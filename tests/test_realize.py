@@ -9,7 +9,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from balancelab import G
-from balancelab import realize as rz
+from balancelab.methods import realize as rz
 from conftest import assert_exactly_balanced
 
 

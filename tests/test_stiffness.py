@@ -10,14 +10,17 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from balancelab import G, Spring
-from balancelab import stiffness as sm
-from balancelab.stiffness import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, InfeasibleDesign, SerialChain,
-                                  balance_all_pairs, chain_parameter_names, constraint_equations,
-                                  constraint_residuals, diagonal_residual, gravity_conditions,
-                                  lustig_a1, lustig_alpha,
-                                  lustig_b1, lustig_min_energy_pose, lustig_table3e_case, lustig_values,
-                                  quadratic_energy, solve, spring2_invariant, stiffness_matrix,
-                                  stiffness_matrix_symbolic, synthesize)
+from balancelab.methods.lustig import stiffness as sm
+from balancelab.methods.lustig.stiffness import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, InfeasibleDesign,
+                                                 SerialChain, balance_all_pairs,
+                                                 chain_parameter_names, constraint_equations,
+                                                 constraint_residuals, diagonal_residual,
+                                                 gravity_conditions, lustig_a1, lustig_alpha,
+                                                 lustig_b1, lustig_min_energy_pose,
+                                                 lustig_table3e_case, lustig_values,
+                                                 quadratic_energy, solve, spring2_invariant,
+                                                 stiffness_matrix, stiffness_matrix_symbolic,
+                                                 synthesize)
 
 from conftest import assert_exactly_balanced, assert_symbolic_matches_numeric
 

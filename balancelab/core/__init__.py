@@ -1,0 +1,17 @@
+"""Core: the parts of a design and the design itself.
+
+What lives here: the input checks (``validation``), loads, springs and joints
+(``elements``), the `Kinematics` contract every mechanism implements (``kinematics``),
+the immutable :class:`Design` with its numeric energy and balance report (``design``)
+and its symbolic energy and balance conditions (``symbolic``).
+
+What it may import: numpy (and sympy lazily), nothing else of balancelab. Everything
+else imports core.
+"""
+from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy, UnreachableConfiguration
+from .elements import G, Attachment, Joint, Load, Spring, SymbolicParts, gravity_load
+from .kinematics import Kinematics, body_to_world, joint_gaps
+
+__all__ = ["BALANCE_TOLERANCE", "BalanceReport", "Design", "Energy", "UnreachableConfiguration", "G",
+           "Attachment", "Joint", "Load", "Spring", "SymbolicParts", "gravity_load", "Kinematics",
+           "body_to_world", "joint_gaps"]

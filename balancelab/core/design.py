@@ -1,0 +1,674 @@
+"""`Design`: the one type every balancing method returns and every tool takes.
+
+A design is a planar linkage of rigid bodies (body 0 the ground) joined by revolute
+joints, loaded by constant forces (weights, counterweights, external loads) and by
+linear springs. It knows its configuration space through a
+:class:`~balancelab.core.Kinematics` object and can prove itself balanced: its
+potential energy is evaluated over many configurations (:meth:`Design.balance_report`)
+and derived symbolically (:meth:`Design.potential_energy_symbolic`,
+:meth:`Design.balance_conditions`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping, NamedTuple, Sequence
+
+import numpy as np
+
+from types import MappingProxyType
+
+from .elements import Joint, Load, Spring, SymbolicParts
+from .kinematics import Kinematics, body_to_world, joint_gaps
+from . import symbolic as _symbolic
+from .validation import positive_int
+
+__all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BALANCE_TOLERANCE"]
+
+#: Relative tolerance below which a design is reported balanced: the spread of its total
+#: potential energy over the sampled configurations, divided by the energy scale.
+BALANCE_TOLERANCE: float = 1e-9
+
+_CHUNK = 16384  # configurations evaluated at once by potential_energy
+
+
+class UnreachableConfiguration(ValueError):
+    """Raised when a configuration is outside what the linkage can reach."""
+
+
+class Energy(NamedTuple):
+    """Potential energy (J): ``total = load + spring``, each of the shape of the configurations."""
+
+    total: np.ndarray
+    load: np.ndarray
+    spring: np.ndarray
+
+
+@dataclass(frozen=True)
+class BalanceReport:
+    """How well a design is balanced over a set of configurations.
+
+    Attributes
+    ----------
+    variation : float
+        ``(max V - min V) / scale`` over the configurations: 0 for a perfect balance.
+    residual : float
+        Largest generalized force ``|dV/dq|`` (J/rad) divided by ``scale`` (1/rad).
+    scale : float
+        Energy scale (J): the sum over every load and spring of the spread of its own
+        energy over the configurations. It does not depend on where the origin is.
+    energy : float
+        Mean total potential energy (J).
+    worst_q : numpy.ndarray
+        Configuration with the largest residual generalized force.
+    balanced : bool
+        ``variation <= tolerance``.
+    tolerance : float
+        The tolerance used (default :data:`BALANCE_TOLERANCE`).
+    n : int
+        Number of configurations examined.
+    """
+
+    variation: float
+    residual: float
+    scale: float
+    energy: float
+    worst_q: np.ndarray
+    balanced: bool
+    tolerance: float
+    n: int
+
+    def __str__(self) -> str:
+        verdict = "balanced" if self.balanced else "NOT balanced"
+        q = ", ".join(f"{np.degrees(v):.1f}°" for v in np.atleast_1d(self.worst_q))
+        return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
+                f"({self.scale:.4g} J) over {self.n} configurations; "
+                f"largest residual dV/dq = {self.residual:.2e} × scale per rad at q = ({q}); "
+                f"mean energy {self.energy:.6g} J")
+
+
+_FIELDS = ("name", "bodies", "joints", "kinematics", "loads", "springs", "symbolic", "labels",
+           "parameters", "reference")
+
+
+def _check_items(loads, springs, joints, nb: int) -> None:
+    """Every load is a Load, every spring a Spring, and all name existing bodies."""
+    for ld in loads:
+        if not isinstance(ld, Load):
+            raise TypeError(f"every load must be a Load, got {type(ld).__name__}")
+        if not 0 <= ld.body < nb:
+            raise ValueError(f"load {ld.name or ld} acts on body {ld.body}; bodies are 0..{nb - 1}")
+    for sp in springs:
+        if not isinstance(sp, Spring):
+            raise TypeError(f"every spring must be a Spring, got {type(sp).__name__}")
+        for at in (sp.a, sp.b):
+            if not 0 <= at.body < nb:
+                raise ValueError(f"spring {sp.name or sp} is attached to body {at.body}; "
+                                 f"bodies are 0..{nb - 1}")
+    for j in joints:
+        for b in (j.body_i, j.body_j):
+            if not 0 <= b < nb:
+                raise ValueError(f"joint {j} names body {b}; bodies are 0..{nb - 1}")
+
+
+def _spread(q_range: np.ndarray, n: int) -> np.ndarray:
+    """``n`` configurations spread over ``q_range``: a fixed low-discrepancy set (Roberts' R_d)."""
+    dof = q_range.shape[0]
+    phi = 2.0
+    for _ in range(30):  # phi^(dof+1) = phi + 1
+        phi = (1 + phi) ** (1 / (dof + 1))
+    alpha = phi ** -np.arange(1, dof + 1)
+    u = (0.5 + np.arange(1, n + 1)[:, None] * alpha) % 1.0
+    lo, hi = q_range[:, 0], q_range[:, 1]
+    return lo + (hi - lo) * (0.02 + 0.96 * u)
+
+
+class Design:
+    """A planar linkage with its loads and springs, balanced or not.
+
+    Parameters
+    ----------
+    name : str
+        Short title shown in figures and reports.
+    bodies : sequence of str
+        Names of the bodies; index 0 is the ground.
+    joints : sequence of Joint
+        Revolute joints ``(body_i, point_i, body_j, point_j)``: local points that coincide
+        in every configuration.
+    kinematics : Kinematics
+        Maps configuration coordinates ``q`` (rad) to the pose of every body.
+    loads : sequence of Load, optional
+        Constant forces (weights, counterweights, external loads).
+    springs : sequence of Spring, optional
+        Linear springs (``free_length == 0`` for ZFL springs).
+    symbolic : SymbolicParts, optional
+        The same loads and springs with sympy expressions in design parameters, for
+        :meth:`potential_energy_symbolic`.
+    labels : mapping of str to (int, (float, float)), optional
+        Named points (the papers' A, B, E, K, a1, b1 ...) for figures.
+    parameters : mapping of str to float, optional
+        Named numbers of the design (spring constants, anchor coordinates ...).
+    reference : str, optional
+        Where the method comes from (paper and equations).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    >>> d.balance_report().balanced
+    True
+    >>> round(d.parameters["k"], 4)
+    83.3333
+    """
+
+    #: largest joint gap (m) accepted between the kinematics and the declared joints
+    JOINT_TOLERANCE = 1e-9
+
+    def __init__(self, name: str, bodies: Sequence[str], joints: Sequence[Joint],
+                 kinematics: Kinematics, loads: Sequence[Load] = (), springs: Sequence[Spring] = (),
+                 *, symbolic: SymbolicParts | None = None, labels: Mapping | None = None,
+                 parameters: Mapping[str, float] | None = None, reference: str = ""):
+        bodies = tuple(str(b) for b in bodies)
+        nb = len(bodies)
+        if nb < 2:
+            raise ValueError("bodies must name the ground and at least one moving body")
+        if not isinstance(kinematics, Kinematics):
+            raise TypeError("kinematics must be a balancelab Kinematics (see balancelab.mechanisms), "
+                            f"got {type(kinematics).__name__}")
+        if kinematics.nbodies != nb:
+            raise ValueError(f"kinematics describes {kinematics.nbodies} bodies but {nb} are named")
+        joints = tuple(Joint(*j) for j in joints)
+        loads, springs = tuple(loads), tuple(springs)
+        _check_items(loads, springs, joints, nb)
+        init = object.__setattr__
+        for key, value in (("name", str(name)), ("bodies", bodies), ("joints", joints),
+                           ("kinematics", kinematics), ("loads", loads), ("springs", springs),
+                           ("symbolic", symbolic), ("labels", MappingProxyType(dict(labels or {}))),
+                           ("parameters", MappingProxyType(dict(parameters or {}))),
+                           ("reference", str(reference)), ("_sym_cache", {})):
+            init(self, key, value)
+        self._pack()
+        self._check_joints()
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"a Design is immutable: use design.replace({key}=...) to get a changed "
+                             "copy")
+
+    def __delattr__(self, key):
+        raise AttributeError("a Design is immutable: use design.replace(...) to get a changed copy")
+
+    def _check_joints(self) -> None:
+        """The kinematics must close every declared joint (gap <= JOINT_TOLERANCE)."""
+        if not self.joints:
+            return
+        q = _spread(self.q_range, 24)
+        poses, ok = self.kinematics.poses(q)
+        if not ok.any():
+            return
+        gaps = joint_gaps(poses[ok], self.joints)
+        worst = gaps.max(axis=0)
+        j = int(np.argmax(worst))
+        if worst[j] > self.JOINT_TOLERANCE:
+            raise ValueError(f"{self.name}: joint {j} {self.joints[j]} opens by {worst[j]:.3g} m in the "
+                             "kinematics' poses; the joints and the kinematics describe different "
+                             "linkages")
+
+    # ------------------------------------------------------------------ basics
+    def __repr__(self) -> str:
+        return (f"<Design {self.name!r}: {len(self.bodies) - 1} moving bodies, dof {self.dof}, "
+                f"{len(self.loads)} loads, {len(self.springs)} springs>")
+
+    @property
+    def dof(self) -> int:
+        """Number of configuration coordinates."""
+        return self.kinematics.dof
+
+    @property
+    def q_names(self) -> tuple[str, ...]:
+        """Names of the configuration coordinates."""
+        return self.kinematics.names
+
+    @property
+    def q_range(self) -> np.ndarray:
+        """Bounds of the configuration coordinates, shape ``(dof, 2)`` (rad)."""
+        return self.kinematics.q_range
+
+    def replace(self, **changes) -> "Design":
+        """Return a copy with some constructor arguments changed (e.g. ``springs=...``).
+
+        Parameters
+        ----------
+        **changes
+            Any of the constructor's arguments.
+
+        Returns
+        -------
+        Design
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> heavier = d.replace(loads=[bl.Load(1, (0.5, 0.0), (0.0, -11.0))])
+        >>> heavier.balance_report().balanced
+        False
+        """
+        unknown = set(changes) - set(_FIELDS)
+        if unknown:
+            raise TypeError(f"replace() got unknown fields {sorted(unknown)}; a Design has {_FIELDS}")
+        args = {key: getattr(self, key) for key in _FIELDS}
+        if "loads" in changes or "springs" in changes:
+            args["symbolic"] = None
+        args.update(changes)
+        return Design(**args)
+
+    def _pack(self) -> None:
+        """Arrays of the loads and springs for the vectorized energy (set once: a Design is immutable)."""
+        L, S = self.loads, self.springs
+        arrays = dict(
+            _lb=np.array([ld.body for ld in L], dtype=int),
+            _lp=np.array([ld.point for ld in L], dtype=float).reshape(-1, 2),
+            _lf=np.array([ld.force for ld in L], dtype=float).reshape(-1, 2),
+            _sab=np.array([s.a.body for s in S], dtype=int),
+            _sap=np.array([s.a.point for s in S], dtype=float).reshape(-1, 2),
+            _sbb=np.array([s.b.body for s in S], dtype=int),
+            _sbp=np.array([s.b.point for s in S], dtype=float).reshape(-1, 2),
+            _sk=np.array([s.k for s in S], dtype=float),
+            _sl0=np.array([s.free_length for s in S], dtype=float))
+        for key, value in arrays.items():
+            object.__setattr__(self, key, value)
+
+    # ------------------------------------------------------------- kinematics
+    def _as_q(self, q) -> np.ndarray:
+        if isinstance(q, (str, bytes)):
+            raise TypeError("q must be numbers (radians), got a string")
+        try:
+            q = np.asarray(q, dtype=float)
+        except (TypeError, ValueError):
+            raise TypeError(f"q must be an array of angles in radians, got {q!r}") from None
+        if self.dof == 1 and (q.ndim == 0 or q.shape[-1] != 1):
+            q = q[..., None]
+        if q.ndim == 0 or q.shape[-1] != self.dof:
+            raise ValueError(f"q must have shape (..., {self.dof}) for the coordinates {self.q_names}, "
+                             f"got shape {q.shape}")
+        if not np.all(np.isfinite(q)):
+            raise ValueError("q must be finite")
+        return q
+
+    def reachable(self, q) -> np.ndarray:
+        """Boolean mask of the configurations the linkage can reach.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+            Configuration coordinates (rad). For one degree of freedom a plain array of
+            angles is accepted too.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (...)
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> bl.singh.scissors_lift().reachable([0.5, 2.0]).tolist()
+        [True, False]
+        """
+        return self.kinematics.poses(self._as_q(q))[1]
+
+    def poses(self, q) -> np.ndarray:
+        """Pose ``(x, y, angle)`` of every body, shape ``(..., len(bodies), 3)``.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+            Configuration coordinates (rad); any leading shape.
+
+        Returns
+        -------
+        numpy.ndarray
+            Positions (m) of each body's frame origin and its angle (rad).
+
+        Raises
+        ------
+        UnreachableConfiguration
+            If any configuration is outside what the linkage can reach (on its declared
+            assembly branch); the message gives the first such ``q`` and the valid range.
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d.poses(0.0)[1].tolist()
+        [0.0, 0.0, 0.0]
+        """
+        return self._checked_poses(q)[0]
+
+    def _checked_poses(self, q, trig: bool = False):
+        """Poses (and the kinematics' cached cos/sin when ``trig``), or a clear error."""
+        qa = self._as_q(q)
+        if trig:
+            poses, ok, cache = self.kinematics.poses_with_trig(qa)
+        else:
+            (poses, ok), cache = self.kinematics.poses(qa), {}
+        if not np.all(ok):
+            bad = qa[~ok][0] if qa.ndim > 1 else qa
+            rng = ", ".join(f"{n} in [{np.degrees(lo):.2f}°, {np.degrees(hi):.2f}°]"
+                            for n, (lo, hi) in zip(self.q_names, self.q_range))
+            raise UnreachableConfiguration(
+                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} rad "
+                f"({np.round(np.degrees(np.atleast_1d(bad)), 3).tolist()}°) cannot be reached; "
+                f"valid range: {rng}")
+        return poses, cache
+
+    def world_points(self, q, attachments) -> np.ndarray:
+        """Global coordinates (m) of body points, shape ``(..., len(attachments), 2)``.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+            Configuration (rad).
+        attachments : sequence of (int, (float, float))
+            ``(body, local point)`` pairs.
+
+        Returns
+        -------
+        numpy.ndarray
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d.world_points(0.0, [(1, (0.5, 0.0))]).round(3).tolist()
+        [[0.5, 0.0]]
+        """
+        poses = self.poses(q)
+        b = np.array([a[0] for a in attachments], dtype=int)
+        p = np.array([a[1] for a in attachments], dtype=float).reshape(-1, 2)
+        x, y = body_to_world(poses, b, p)
+        return np.stack([x, y], axis=-1)
+
+    def joint_error(self, q) -> np.ndarray:
+        """Largest gap (m) between the two sides of any joint, per configuration.
+
+        Zero (to rounding) for a correct kinematic model; the tests use it to check the
+        closed-form loop solutions.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+        """
+        poses = self.poses(q)
+        gaps = joint_gaps(poses, self.joints)
+        return gaps.max(axis=-1) if self.joints else np.zeros(poses.shape[:-2])
+
+    def sample(self, n: int = 1000, seed: int | None = 0) -> np.ndarray:
+        """``n`` reachable configurations spread uniformly over the configuration range.
+
+        Parameters
+        ----------
+        n : int
+            Number of configurations, >= 1.
+        seed : int or None
+            Seed of the random generator (``None`` for fresh randomness).
+
+        Returns
+        -------
+        numpy.ndarray, shape (n, dof)
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> bl.singh.scissors_lift().sample(5).shape
+        (5, 1)
+        """
+        n = positive_int("n (number of configurations)", n)
+        rng = np.random.default_rng(seed)
+        lo, hi = self.q_range[:, 0], self.q_range[:, 1]
+        out = []
+        count = 0
+        for _ in range(200):
+            q = lo + (hi - lo) * rng.random((max(2 * n, 64), self.dof))
+            ok = self.kinematics.poses(q)[1]
+            out.append(q[ok])
+            count += int(ok.sum())
+            if count >= n:
+                break
+        q = np.concatenate(out)[:n]
+        if len(q) < n:
+            raise RuntimeError(f"{self.name}: could only find {len(q)} reachable configurations")
+        return q
+
+    # ----------------------------------------------------------------- energy
+    def _element_energies(self, poses: np.ndarray, trig: dict | None = None):
+        """Energy of each load and each spring: two lists of arrays of shape (...).
+
+        ``trig`` may hold ``{body: (cos, sin)}`` of body angles already computed.
+        """
+        lead = poses.shape[:-2]
+        trig = dict(trig or {})
+
+        def world(body, p):
+            if body == 0:  # the ground sits at the origin and never turns
+                return p[0], p[1]
+            x, y = poses[..., body, 0], poses[..., body, 1]
+            if p[0] == 0 and p[1] == 0:
+                return x, y
+            if body not in trig:
+                angle = poses[..., body, 2]
+                trig[body] = (np.cos(angle), np.sin(angle))
+            c, s = trig[body]
+            if p[1] == 0:
+                return x + c * p[0], y + s * p[0]
+            return x + c * p[0] - s * p[1], y + s * p[0] + c * p[1]
+
+        vl = []
+        for b, p, f in zip(self._lb, self._lp, self._lf):
+            x, y = world(b, p)
+            vl.append(np.broadcast_to(-(f[0] * x + f[1] * y), lead))
+        vs = []
+        for i in range(len(self.springs)):
+            ax, ay = world(self._sab[i], self._sap[i])
+            bx, by = world(self._sbb[i], self._sbp[i])
+            dx, dy = bx - ax, by - ay
+            d2 = dx * dx + dy * dy
+            if self._sl0[i] == 0.0:
+                vs.append(0.5 * self._sk[i] * d2)
+            else:
+                ext = np.sqrt(d2) - self._sl0[i]
+                vs.append(0.5 * self._sk[i] * ext * ext)
+        return vl, vs
+
+    def potential_energy(self, q) -> Energy:
+        """Potential energy (J) of the loads, of the springs and in total.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+            Configurations (rad), any leading shape.
+
+        Returns
+        -------
+        Energy
+            Named tuple ``(total, load, spring)`` of arrays of shape ``(...)``.
+
+        Examples
+        --------
+        >>> import balancelab as bl, numpy as np
+        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> e = d.potential_energy(np.linspace(0, 3, 4))
+        >>> bool(np.ptp(e.total) < 1e-12)
+        True
+        """
+        q = self._as_q(q)
+        lead = q.shape[:-1]
+        flat = q.reshape(-1, self.dof)
+        out = np.empty((3, len(flat)))
+        for start in range(0, len(flat), _CHUNK):  # chunks that stay in the CPU cache
+            part = flat[start:start + _CHUNK]
+            poses, trig = self._checked_poses(part, trig=True)
+            vl, vs = self._element_energies(poses, trig)
+            load = sum(vl[1:], vl[0]) if vl else 0.0
+            spring = sum(vs[1:], vs[0]) if vs else 0.0
+            out[1, start:start + len(part)] = load
+            out[2, start:start + len(part)] = spring
+        out[0] = out[1] + out[2]
+        return Energy(*(row.reshape(lead) for row in out))
+
+    def generalized_force(self, q, h: float = 1e-6) -> np.ndarray:
+        """``dV/dq`` (J/rad) by central differences, shape ``(..., dof)``.
+
+        Near a limit of the range a one-sided difference is used.
+
+        Parameters
+        ----------
+        q : array_like, shape (..., dof)
+        h : float
+            Step (rad).
+
+        Returns
+        -------
+        numpy.ndarray
+        """
+        q = self._as_q(q)
+        out = np.empty(q.shape)
+        for i in range(self.dof):
+            e = np.zeros(self.dof)
+            e[i] = h
+            okp = self.reachable(q + e)
+            okm = self.reachable(q - e)
+            qp = np.where(okp[..., None], q + e, q)
+            qm = np.where(okm[..., None], q - e, q)
+            vp = self.potential_energy(qp).total
+            vm = self.potential_energy(qm).total
+            den = np.where(okp, h, 0.0) + np.where(okm, h, 0.0)
+            out[..., i] = (vp - vm) / np.where(den > 0, den, 1.0)
+        return out
+
+    def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,
+                       tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
+        """Check that the potential energy is constant over many configurations.
+
+        The total energy is evaluated over ``n`` sampled configurations (or the given
+        ``q``). Its spread ``max - min`` is divided by an energy scale, the sum over every
+        load and spring of the spread of its *own* energy over the same configurations
+        (so the verdict does not depend on where the origin is, and a counterweight
+        design, whose gravity energy is constant in total, still has a scale). The
+        design is reported balanced when this ratio is at most ``tolerance``
+        (:data:`BALANCE_TOLERANCE` = 1e-9 by default). The largest generalized force
+        ``|dV/dq|``, divided by the same scale, is reported too.
+
+        Parameters
+        ----------
+        q : array_like, shape (m, dof), optional
+            Configurations to use instead of sampling.
+        n : int
+            Number of sampled configurations when ``q`` is not given.
+        seed : int or None
+            Seed for the sampling.
+        tolerance : float
+            Relative tolerance for the ``balanced`` verdict.
+
+        Returns
+        -------
+        BalanceReport
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> print(bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3).balance_report().balanced)
+        True
+        """
+        q = self.sample(n, seed) if q is None else self._as_q(q).reshape(-1, self.dof)
+        poses = self.poses(q)
+        vl, vs = self._element_energies(poses)
+        vl = np.stack(vl, -1) if vl else np.zeros((len(q), 0))
+        vs = np.stack(vs, -1) if vs else np.zeros((len(q), 0))
+        total = vl.sum(-1) + vs.sum(-1)
+        scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0))) if len(q) else 0.0
+        if scale == 0.0:
+            scale = float(np.max(np.abs(total))) if total.size else 0.0
+        if scale == 0.0:
+            raise ValueError(f"{self.name}: nothing in this design stores energy as it moves, "
+                             "so there is nothing to balance")
+        variation = float(np.ptp(total)) / scale
+        gf = self.generalized_force(q)
+        mag = np.max(np.abs(gf), axis=-1)
+        worst = int(np.argmax(mag))
+        return BalanceReport(variation=variation, residual=float(mag[worst]) / scale, scale=scale,
+                             energy=float(np.mean(total)), worst_q=q[worst].copy(),
+                             balanced=bool(variation <= tolerance), tolerance=tolerance, n=len(q))
+
+    # --------------------------------------------------------------- symbolic
+    def potential_energy_symbolic(self, parametric: bool = True, split: bool = False):
+        """The potential energy as a sympy expression in the configuration angles.
+
+        Parameters
+        ----------
+        parametric : bool
+            Use the method's symbolic design parameters (when it has them, see
+            ``design.symbolic.values``); otherwise the numbers of this design.
+        split : bool
+            Return ``(load part, spring part)`` instead of their sum.
+
+        Returns
+        -------
+        sympy.Expr or tuple of sympy.Expr
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d.potential_energy_symbolic()
+        W*l*sin(theta) + k*(a_x**2*cos(theta)**2 + (a_x*sin(theta) - b_y)**2)/2
+        """
+        return _symbolic.potential_energy_symbolic(self, parametric, split)
+
+    def trig_coefficients(self, parametric: bool = True) -> dict:
+        """Coefficients of the potential energy in a unique trigonometric form.
+
+        The energy is expanded into a polynomial in ``cos(q_i)`` and ``sin(q_i)`` and
+        reduced with ``sin^2 = 1 - cos^2``; in that normal form it is constant exactly when
+        every coefficient other than the constant term vanishes.
+
+        Returns
+        -------
+        dict
+            Maps each trigonometric monomial (a sympy expression, ``1`` for the constant)
+            to its coefficient.
+        """
+        return _symbolic.trig_coefficients(self, parametric)
+
+    def balance_conditions(self, parametric: bool = True) -> list:
+        """The equations that make the potential energy constant.
+
+        Every coefficient of a non-constant trigonometric term of the energy (see
+        :meth:`trig_coefficients`) set to zero. For a closed loop written through its
+        joints these conditions are sufficient; they are also necessary for open chains.
+
+        Returns
+        -------
+        list of sympy.Eq
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3).balance_conditions()
+        [Eq(W*l - a_x*b_y*k, 0)]
+        """
+        return _symbolic.balance_conditions(self, parametric)
+
+    def conditions_residual(self) -> float:
+        """Largest balance-condition coefficient of this design's numbers, relative to its scale.
+
+        Substitutes the design's values into :meth:`balance_conditions` (parametric when
+        the method has symbols). Near zero (round-off) for a balanced design.
+
+        Returns
+        -------
+        float
+        """
+        return _symbolic.conditions_residual(self)

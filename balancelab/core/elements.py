@@ -1,0 +1,201 @@
+"""The parts a design is made of: loads, springs and revolute joints.
+
+Conventions (see the notation page of the book):
+
+* SI units throughout: metres, newtons, newtons per metre, kilograms, radians.
+* Gravity is ``G = 9.81`` m/s^2 along ``-y``; a weight is the constant load ``(0, -m G)``.
+* Body 0 is the ground. Every moving body has a local frame whose origin is its
+  proximal joint and whose x-axis runs along the link; points on a body are given
+  in that local frame.
+* A spring with ``free_length == 0`` is a zero-free-length (ZFL) spring: its force is
+  ``k`` times its *length*, not its extension.
+
+Sign convention of a spring (as in :class:`sympy.physics.mechanics.LinearSpring`):
+the spring pulls its two attachments together when it is longer than its free length,
+and its potential energy is ``k/2 (|b - a| - free_length)^2`` whatever its direction.
+A constant load ``f`` acting at a point ``r`` has potential energy ``-f . r``; for a
+weight that is ``m G y``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+from .validation import body_index, finite_real, planar_point
+
+__all__ = ["G", "Attachment", "Joint", "Load", "Spring", "SymbolicParts", "gravity_load"]
+
+#: Gravitational acceleration (m/s^2), acting along -y.
+G: float = 9.81
+
+
+_REALIZATIONS = ("coil", "pulley", "gas")
+
+
+class Attachment(NamedTuple):
+    """A point fixed to a body: ``body`` index and ``point`` in its local frame (m)."""
+
+    body: int
+    point: tuple[float, float]
+
+
+def _attachment(name: str, value) -> Attachment:
+    try:
+        body, point = value
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a pair (body, (x, y)), got {value!r}") from None
+    return Attachment(body_index(f"{name} body", body), planar_point(f"{name} point", point))
+
+
+class Joint(NamedTuple):
+    """A revolute joint: ``point_i`` on ``body_i`` coincides with ``point_j`` on ``body_j``."""
+
+    body_i: int
+    point_i: tuple[float, float]
+    body_j: int
+    point_j: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Load:
+    """A constant force acting at a point of a body.
+
+    Parameters
+    ----------
+    body : int
+        Index of the body the load acts on (0 is the ground).
+    point : (float, float)
+        Point of action in the body's local frame (m).
+    force : (float, float)
+        The force in the global frame (N). A weight of mass ``m`` is ``(0, -m G)``.
+    name : str, optional
+        Label used in figures and reports.
+    kind : {"weight", "counterweight", "force"}
+        How the load is drawn: a weight or external force as an arrow, a
+        counterweight as a disc.
+
+    Examples
+    --------
+    >>> Load(1, (0.5, 0.0), (0.0, -9.81)).force
+    (0.0, -9.81)
+    """
+
+    body: int
+    point: tuple[float, float]
+    force: tuple[float, float]
+    name: str = ""
+    kind: str = "force"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "body", body_index("load body", self.body))
+        object.__setattr__(self, "point", planar_point("load point", self.point))
+        object.__setattr__(self, "force", planar_point("load force", self.force))
+        if self.kind not in ("weight", "counterweight", "force"):
+            raise ValueError(f"load kind must be 'weight', 'counterweight' or 'force', got {self.kind!r}")
+
+    @property
+    def mass(self) -> float:
+        """Mass (kg) equivalent to a downward force of this size: ``-force_y / G``."""
+        return -self.force[1] / G
+
+
+def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "weight") -> Load:
+    """Return the weight of a mass ``mass`` (kg) at ``point`` of ``body`` as a :class:`Load`.
+
+    Parameters
+    ----------
+    body : int
+        Body carrying the mass.
+    point : (float, float)
+        Centre of mass in the body's local frame (m).
+    mass : float
+        Mass in kg; must be > 0.
+    name : str, optional
+        Label for figures.
+    kind : {"weight", "counterweight"}
+        Drawn as an arrow or as a disc.
+
+    Returns
+    -------
+    Load
+        The load ``(0, -mass G)`` at ``point``.
+
+    Examples
+    --------
+    >>> gravity_load(1, (0.3, 0.0), 2.0).force
+    (0.0, -19.62)
+    """
+    mass = finite_real("mass", mass, positive=True)
+    return Load(body, point, (0.0, -mass * G), name=name, kind=kind)
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A linear spring between two attachment points.
+
+    The energy is ``k/2 (|b - a| - free_length)^2`` where ``a`` and ``b`` are the
+    global positions of the two attachments. With ``free_length == 0`` the spring is a
+    zero-free-length (ZFL) spring and its energy is ``k/2 |b - a|^2``: a quadratic
+    function of the attachment coordinates, which is what makes exact balancing
+    possible. A negative free length is allowed (a ZFL spring in parallel with an
+    ordinary one behaves like one, Deepak & Ananthasuresh 2012, Sec. 1.1).
+
+    Parameters
+    ----------
+    k : float
+        Stiffness (N/m), > 0.
+    free_length : float
+        Free length (m); 0 for a ZFL spring.
+    a, b : (int, (float, float))
+        The two attachments as ``(body, local point)``.
+    name : str, optional
+        Label (for instance ``"k1"``).
+    realization : {"coil", "pulley", "gas"}
+        How the spring is built; only changes how it is drawn.
+
+    Examples
+    --------
+    >>> s = Spring(100.0, 0.0, (0, (0.0, 0.2)), (1, (0.1, 0.0)))
+    >>> s.is_zfl
+    True
+    """
+
+    k: float
+    free_length: float
+    a: Attachment
+    b: Attachment
+    name: str = ""
+    realization: str = "coil"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "k", finite_real("spring stiffness k (N/m)", self.k, positive=True))
+        object.__setattr__(self, "free_length", finite_real("spring free_length (m)", self.free_length))
+        object.__setattr__(self, "a", _attachment("spring attachment a", self.a))
+        object.__setattr__(self, "b", _attachment("spring attachment b", self.b))
+        if self.realization not in _REALIZATIONS:
+            raise ValueError(f"spring realization must be one of {_REALIZATIONS}, got {self.realization!r}")
+        if self.a.body == self.b.body:
+            raise ValueError("a spring must join two different bodies; both attachments are on body "
+                             f"{self.a.body}")
+
+    @property
+    def is_zfl(self) -> bool:
+        """True for a zero-free-length spring."""
+        return self.free_length == 0.0
+
+
+@dataclass(frozen=True)
+class SymbolicParts:
+    """Loads and springs whose values are sympy expressions in named design parameters.
+
+    A method that keeps its parameters symbolic builds its loads and springs twice from
+    one builder: once with numbers (the design) and once with sympy symbols (this).
+    ``values`` maps every free symbol to its number in the design. ``kinematics``, when
+    given, is a kinematics whose joint points are sympy expressions too (link lengths as
+    symbols); it is used only for :meth:`balancelab.Design.potential_energy_symbolic`.
+    """
+
+    loads: tuple = ()
+    springs: tuple = ()
+    values: dict = field(default_factory=dict)
+    kinematics: object = None

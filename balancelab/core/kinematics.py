@@ -1,0 +1,165 @@
+"""The `Kinematics` contract: configuration coordinates in, body poses out.
+
+Every mechanism of :mod:`balancelab.mechanisms` implements this abstract base class;
+:class:`balancelab.Design` relies on nothing else. The contract lives in ``core``
+(not in ``mechanisms``) because the design, which is core, is written against it:
+layers only look down.
+
+A subclass sets three attributes and implements one method:
+
+``nbodies``
+    Number of bodies, the ground (body 0) included.
+``names``
+    Names of the configuration coordinates (also the sympy symbol names).
+``q_range``
+    Array of shape ``(dof, 2)``: the bounds of each coordinate (rad).
+``poses(q)``
+    Returns ``(poses, ok)``: poses ``(x, y, angle)`` of shape ``(..., nbodies, 3)`` and
+    the boolean mask of the configurations the linkage can reach.
+
+:meth:`Kinematics.reachable` and :meth:`Kinematics.joint_error` follow from ``poses``.
+A kinematics that can write body points as sympy expressions also implements
+:meth:`Kinematics.symbolic_point` (and :meth:`Kinematics.symbols` when its symbols are
+not the coordinates themselves); the others raise ``NotImplementedError`` there.
+"""
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from typing import Sequence
+
+import numpy as np
+
+__all__ = ["Kinematics", "body_to_world", "joint_gaps"]
+
+
+def body_to_world(poses: np.ndarray, bodies, points) -> tuple[np.ndarray, np.ndarray]:
+    """Global coordinates of local body points, for every configuration.
+
+    Parameters
+    ----------
+    poses : numpy.ndarray, shape (..., nbodies, 3)
+        Body poses ``(x, y, angle)`` (m, m, rad).
+    bodies : array_like of int, shape (n,)
+        Body index of each point.
+    points : array_like, shape (n, 2)
+        Points in their bodies' local frames (m).
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        ``x`` and ``y`` (m), each of shape ``(..., n)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> poses = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, np.pi / 2]])
+    >>> x, y = body_to_world(poses, [1], [(2.0, 0.0)])
+    >>> round(float(x[0]), 12), round(float(y[0]), 12)
+    (1.0, 2.0)
+    """
+    bodies = np.asarray(bodies, dtype=int)
+    points = np.asarray(points, dtype=float).reshape(-1, 2)
+    P = poses[..., bodies, :]
+    c, s = np.cos(P[..., 2]), np.sin(P[..., 2])
+    x = P[..., 0] + c * points[:, 0] - s * points[:, 1]
+    y = P[..., 1] + s * points[:, 0] + c * points[:, 1]
+    return x, y
+
+
+def joint_gaps(poses: np.ndarray, joints: Sequence) -> np.ndarray:
+    """Gap (m) between the two sides of each revolute joint, shape ``(..., len(joints))``.
+
+    Parameters
+    ----------
+    poses : numpy.ndarray, shape (..., nbodies, 3)
+    joints : sequence of Joint
+        ``(body_i, point_i, body_j, point_j)``.
+
+    Returns
+    -------
+    numpy.ndarray
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from balancelab import Joint
+    >>> poses = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    >>> joint_gaps(poses, [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))]).tolist()
+    [0.0]
+    """
+    if not joints:
+        return np.zeros(poses.shape[:-2] + (0,))
+    xi, yi = body_to_world(poses, [j[0] for j in joints], [j[1] for j in joints])
+    xj, yj = body_to_world(poses, [j[2] for j in joints], [j[3] for j in joints])
+    return np.hypot(xi - xj, yi - yj)
+
+
+class Kinematics(ABC):
+    """Abstract base class of every mechanism's kinematics (see the module docstring).
+
+    Examples
+    --------
+    A one-link lever, written from scratch:
+
+    >>> import numpy as np
+    >>> class Lever(Kinematics):
+    ...     nbodies, names, q_range = 2, ("theta",), np.array([[-np.pi, np.pi]])
+    ...     def poses(self, q):
+    ...         q = np.asarray(q, dtype=float)
+    ...         out = np.zeros(q.shape[:-1] + (2, 3))
+    ...         out[..., 1, 2] = q[..., 0]
+    ...         return out, np.ones(q.shape[:-1], dtype=bool)
+    >>> Lever().reachable([[0.3]]).tolist()
+    [True]
+    """
+
+    nbodies: int
+    names: tuple[str, ...]
+    q_range: np.ndarray
+    #: bodies whose angles are the symbolic coordinates, when they are not ``q`` itself
+    symbol_bodies: tuple | None = None
+
+    @property
+    def dof(self) -> int:
+        """Number of configuration coordinates."""
+        return len(self.names)
+
+    @abstractmethod
+    def poses(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Return ``(poses, ok)``: poses of shape ``(..., nbodies, 3)`` and a boolean mask."""
+
+    def poses_with_trig(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, dict]:
+        """:meth:`poses` plus any ``{body: (cos(angle), sin(angle))}`` already computed."""
+        poses, ok = self.poses(q)
+        return poses, ok, {}
+
+    def reachable(self, q: np.ndarray) -> np.ndarray:
+        """Boolean mask of the configurations ``q`` (shape ``(..., dof)``) the linkage reaches."""
+        return self.poses(q)[1]
+
+    def joint_error(self, q: np.ndarray, joints: Sequence) -> np.ndarray:
+        """Largest gap (m) of any of ``joints`` at each configuration, shape ``(...)``.
+
+        Unreachable configurations get ``inf``: their poses mean nothing.
+        """
+        poses, ok = self.poses(q)
+        gaps = joint_gaps(poses, joints)
+        worst = gaps.max(axis=-1) if gaps.shape[-1] else np.zeros(gaps.shape[:-1])
+        return np.where(ok, worst, np.inf)
+
+    def symbols(self):
+        """The sympy symbols of the configuration coordinates."""
+        import sympy as sp
+
+        return sp.symbols(self.names, real=True)
+
+    def symbolic_point(self, body: int, point, syms):
+        """Global position (a pair of sympy expressions) of a local ``point`` of ``body``."""
+        raise NotImplementedError(f"{type(self).__name__} has numeric kinematics only")
+
+    def symbol_values(self, q) -> np.ndarray:
+        """Values of :meth:`symbols` in the configurations ``q``, shape ``(..., len(symbols))``."""
+        q = np.asarray(q, dtype=float)
+        if self.symbol_bodies is None:
+            return q
+        return self.poses(q)[0][..., list(self.symbol_bodies), 2]

@@ -1,0 +1,14 @@
+"""Course: what the book and the labs use on top of the library.
+
+What lives here: ``catalog`` (every worked example, in course order, from the methods'
+registry), ``gallery`` (``python -m balancelab.course.gallery`` prints their reports),
+``check`` (the labs' answer checks), ``grading`` (the bulk grader,
+``python -m balancelab.course.grading``) and ``labtools`` (student versions of the lab
+notebooks, ``python -m balancelab.course.labtools``).
+
+A new lab check goes in ``check`` next to the checks of its lab. What it may import:
+everything below it (``core``, ``mechanisms``, ``methods``, ``viz``).
+"""
+from .catalog import catalog
+
+__all__ = ["catalog"]

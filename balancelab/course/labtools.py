@@ -1,0 +1,326 @@
+"""Student versions of the labs, generated from the solution notebooks (the single source).
+
+A solution notebook marks what students must not see:
+
+* in a code cell, the lines between ``# BEGIN SOLUTION`` and ``# END SOLUTION`` (each
+  on a line of its own, any indentation) are replaced by one line
+  ``raise NotImplementedError("...")`` at the indentation of the ``BEGIN`` marker;
+* in a markdown cell, everything between ``<!-- BEGIN SOLUTION -->`` and
+  ``<!-- END SOLUTION -->`` is removed (a cell left empty is dropped);
+* a cell tagged ``solution`` is dropped entirely.
+
+The student version has no outputs and no execution counts. One command regenerates
+every student version::
+
+    python -m balancelab.course.labtools generate            # labs/solutions -> labs/student
+    python -m balancelab.course.labtools check               # exit 1 if a student version is stale
+    python -m balancelab.course.labtools execute             # re-run the solutions, store outputs
+"""
+from __future__ import annotations
+
+import argparse
+import copy
+import re
+import sys
+from pathlib import Path
+
+__all__ = ["PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
+           "stale", "execute_notebook", "main"]
+
+CODE_BEGIN = re.compile(r"^(\s*)# BEGIN SOLUTION\s*$")
+CODE_END = re.compile(r"^\s*# END SOLUTION\s*$")
+MD_BEGIN = "<!-- BEGIN SOLUTION -->"
+MD_END = "<!-- END SOLUTION -->"
+SOLUTION_TAG = "solution"
+#: The line that replaces a solution region in a code cell.
+PLACEHOLDER = 'raise NotImplementedError("your answer here: replace this line")'
+
+WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
+#: What a stored widget output says where no widget manager can show it.
+WIDGET_TEXT = "Live explorer: run the notebook to use its sliders."
+
+_ROOT = Path(__file__).resolve().parents[2]  # the repository: balancelab/course/labtools.py
+DEFAULT_SOLUTIONS = _ROOT / "labs" / "solutions"
+DEFAULT_STUDENT = _ROOT / "labs" / "student"
+
+
+class MarkerError(ValueError):
+    """A solution marker is missing its partner or nested."""
+
+
+def _strip_code(src: str, where: str) -> tuple[str, list[str]]:
+    out, removed, inside, indent = [], [], False, ""
+    for n, line in enumerate(src.split("\n"), 1):
+        m = CODE_BEGIN.match(line)
+        if m:
+            if inside:
+                raise MarkerError(f"{where}, line {n}: '# BEGIN SOLUTION' inside another solution region")
+            inside, indent = True, m.group(1)
+            removed.append("")
+            continue
+        if CODE_END.match(line):
+            if not inside:
+                raise MarkerError(f"{where}, line {n}: '# END SOLUTION' without a BEGIN")
+            inside = False
+            out.append(indent + PLACEHOLDER)
+            continue
+        if inside:
+            removed[-1] += line + "\n"
+        else:
+            out.append(line)
+    if inside:
+        raise MarkerError(f"{where}: '# BEGIN SOLUTION' is never closed by '# END SOLUTION'")
+    return "\n".join(out), removed
+
+
+def _strip_markdown(src: str, where: str) -> tuple[str, list[str]]:
+    out, removed, pos = [], [], 0
+    while True:
+        b = src.find(MD_BEGIN, pos)
+        e = src.find(MD_END, pos)
+        if b < 0:
+            if e >= 0:
+                raise MarkerError(f"{where}: '{MD_END}' without a BEGIN")
+            out.append(src[pos:])
+            break
+        if e < b:
+            raise MarkerError(f"{where}: '{MD_END}' without a BEGIN")
+        nb = src.find(MD_BEGIN, b + len(MD_BEGIN))
+        if nb >= 0 and nb < e:
+            raise MarkerError(f"{where}: nested '{MD_BEGIN}'")
+        out.append(src[pos:b])
+        removed.append(src[b + len(MD_BEGIN):e])
+        pos = e + len(MD_END)
+    text = "".join(out)
+    text = re.sub(r"\n{3,}", "\n\n", text).strip("\n")
+    return text, removed
+
+
+def _cell_where(name: str, i: int) -> str:
+    return f"{name}: cell {i}"
+
+
+def _split(nb, name: str = "notebook"):
+    """(student cells, removed texts) of a notebook."""
+    cells, removed = [], []
+    for i, cell in enumerate(nb.cells):
+        src = cell.source if isinstance(cell.source, str) else "".join(cell.source)
+        if SOLUTION_TAG in cell.get("metadata", {}).get("tags", []):
+            removed.append(src)
+            continue
+        where = _cell_where(name, i)
+        new = copy.deepcopy(cell)
+        if cell.cell_type == "code":
+            text, gone = _strip_code(src, where)
+            new.outputs = []
+            new.execution_count = None
+        elif cell.cell_type == "markdown":
+            text, gone = _strip_markdown(src, where)
+            if gone and not text.strip():
+                removed.extend(gone)
+                continue
+        else:
+            text, gone = src, []
+        new.source = text
+        md = dict(new.get("metadata", {}))
+        md.pop("execution", None)
+        new.metadata = md
+        cells.append(new)
+        removed.extend(gone)
+    return cells, removed
+
+
+def student_version(nb, name: str = "notebook"):
+    """The student version of a solution notebook (a new notebook; the input is untouched).
+
+    Parameters
+    ----------
+    nb : nbformat.NotebookNode
+        The solution notebook.
+    name : str
+        Name used in error messages.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+
+    Raises
+    ------
+    MarkerError
+        If a solution marker is unbalanced or nested.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(
+    ...     "x = 1\\n# BEGIN SOLUTION\\nk = 2\\n# END SOLUTION")])
+    >>> print(student_version(nb).cells[0].source)
+    x = 1
+    raise NotImplementedError("your answer here: replace this line")
+    """
+    import nbformat
+
+    cells, _ = _split(nb, name)
+    out = nbformat.v4.new_notebook()
+    out.nbformat, out.nbformat_minor = nb.nbformat, nb.nbformat_minor
+    md = copy.deepcopy(dict(nb.metadata))
+    md.pop("widgets", None)
+    bl = dict(md.get("balancelab", {}))
+    bl["version"] = "student"
+    md["balancelab"] = bl
+    out.metadata = md
+    out.cells = cells
+    return out
+
+
+def solution_texts(nb, name: str = "notebook") -> list[str]:
+    """The text of every solution region (code, prose and tagged cells) of a notebook.
+
+    Parameters
+    ----------
+    nb : nbformat.NotebookNode
+
+    Returns
+    -------
+    list of str
+    """
+    return [t for t in _split(nb, name)[1] if t.strip()]
+
+
+def student_text(path: str | Path) -> str:
+    """The exact file content of the student version of the solution notebook at ``path``.
+
+    Parameters
+    ----------
+    path : str or Path
+        A solution notebook.
+
+    Returns
+    -------
+    str
+        JSON text, as :func:`generate` writes it.
+    """
+    import nbformat
+
+    path = Path(path)
+    nb = nbformat.read(path, as_version=4)
+    return nbformat.writes(student_version(nb, path.name)) + "\n"
+
+
+def _pairs(src: Path, dst: Path):
+    src, dst = Path(src), Path(dst)
+    files = sorted(src.glob("*.ipynb"))
+    if not files:
+        raise FileNotFoundError(f"no solution notebooks (*.ipynb) in {src}")
+    return [(f, dst / f.name) for f in files]
+
+
+def generate(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUDENT) -> list[Path]:
+    """Write the student version of every solution notebook in ``src`` to ``dst``.
+
+    Parameters
+    ----------
+    src : str or Path
+        Folder of solution notebooks.
+    dst : str or Path
+        Folder for the student versions (created if needed; same file names).
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
+    written = []
+    Path(dst).mkdir(parents=True, exist_ok=True)
+    for s, d in _pairs(src, dst):
+        d.write_text(student_text(s), encoding="utf-8")
+        written.append(d)
+    return written
+
+
+def stale(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUDENT) -> list[Path]:
+    """Student versions that differ from what :func:`generate` would write (or are missing).
+
+    Returns
+    -------
+    list of Path
+    """
+    return [d for s, d in _pairs(src, dst)
+            if not d.exists() or d.read_text(encoding="utf-8") != student_text(s)]
+
+
+def execute_notebook(path: str | Path, timeout: int = 120, kernel_name: str = "python3",
+                     allow_errors: bool = False, write: bool = True):
+    """Run a notebook top to bottom in a fresh kernel (in its own folder) and store the outputs.
+
+    Parameters
+    ----------
+    path : str or Path
+        The notebook.
+    timeout : int
+        Per-cell time limit (s).
+    kernel_name : str
+        Jupyter kernel to use.
+    allow_errors : bool
+        Keep going after a failing cell.
+    write : bool
+        Write the executed notebook back to ``path``.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        The executed notebook.
+    """
+    import nbformat
+    from nbclient import NotebookClient
+
+    path = Path(path)
+    nb = nbformat.read(path, as_version=4)
+    NotebookClient(nb, timeout=timeout, kernel_name=kernel_name, allow_errors=allow_errors,
+                   resources={"metadata": {"path": str(path.parent)}},
+                   store_widget_state=False).execute()
+    for cell in nb.cells:
+        cell.get("metadata", {}).pop("execution", None)
+        for out in cell.get("outputs", []):
+            data = out.get("data", {})
+            if WIDGET_MIME in data and "text/plain" in data:
+                # the widget's repr holds the rendered picture's bytes: keep the file small
+                data["text/plain"] = WIDGET_TEXT
+    if write:
+        nbformat.write(nb, path)
+    return nb
+
+
+def main(argv=None) -> int:
+    """Command line: ``generate``, ``check`` or ``execute`` (see the module docstring)."""
+    ap = argparse.ArgumentParser(prog="python -m balancelab.course.labtools",
+                                 description="Generate student versions of the lab notebooks.")
+    ap.add_argument("command", choices=("generate", "check", "execute"))
+    ap.add_argument("--solutions", default=str(DEFAULT_SOLUTIONS), help="solution notebooks folder")
+    ap.add_argument("--student", default=str(DEFAULT_STUDENT), help="student versions folder")
+    ap.add_argument("notebooks", nargs="*", help="for execute: the notebooks (default: all solutions)")
+    args = ap.parse_args(argv)
+    try:
+        if args.command == "generate":
+            for p in generate(args.solutions, args.student):
+                print(f"wrote {p}")
+        elif args.command == "check":
+            bad = stale(args.solutions, args.student)
+            for p in bad:
+                print(f"stale: {p} (run: python -m balancelab.course.labtools generate)")
+            if bad:
+                return 1
+            print("every student version is up to date")
+        else:
+            paths = args.notebooks or sorted(str(p) for p in Path(args.solutions).glob("*.ipynb"))
+            for p in paths:
+                execute_notebook(p)
+                print(f"executed {p}")
+    except (MarkerError, FileNotFoundError) as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

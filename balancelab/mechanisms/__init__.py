@@ -1,0 +1,25 @@
+"""Mechanisms: the linkages themselves, with no springs and no loads.
+
+What lives here: the one geometry kernel (``geometry``: rotations, rigid-body points,
+circle intersection), generic kinematics (``base``: explicit pose functions, trees of
+revolute joints), and one module per mechanism of the course: ``lever``, ``chain`` (2R
+arm), ``fourbar``, ``scissors``, ``peaucellier``. Each mechanism implements
+:class:`balancelab.core.Kinematics` and names its joints.
+
+A new mechanism goes in a new module here: a `Kinematics` subclass (or a function
+returning one) and a function returning its joints.
+
+What it may import: ``balancelab.core``.
+"""
+from .base import ExplicitKinematics, TreeKinematics
+from .chain import serial_2r_joints, serial_2r_kinematics
+from .fourbar import FourBarKinematics, fourbar_joints
+from .geometry import binary_link_point, circle_intersection, rotate
+from .lever import lever_design, lever_kinematics
+from .peaucellier import PeaucellierKinematics
+from .scissors import scissors_joints, scissors_kinematics
+
+__all__ = ["ExplicitKinematics", "TreeKinematics", "serial_2r_joints", "serial_2r_kinematics",
+           "FourBarKinematics", "fourbar_joints", "binary_link_point", "circle_intersection", "rotate",
+           "lever_design", "lever_kinematics", "PeaucellierKinematics", "scissors_joints",
+           "scissors_kinematics"]

@@ -1,0 +1,75 @@
+"""The one geometry kernel of the mechanisms: rotations, rigid-body points, circle intersections.
+
+Every closed-form loop solution in :mod:`balancelab.mechanisms` places its joints with
+these functions; they work on numpy arrays (vectorized over configurations) and, where
+noted, on sympy expressions. Layer: mechanisms; imports nothing from balancelab.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["rotate", "binary_link_point", "circle_intersection"]
+
+
+def rotate(lib, angle, point):
+    """Rotate the local ``point`` by ``angle`` with the math library ``lib`` (numpy or sympy)."""
+    c, s = lib.cos(angle), lib.sin(angle)
+    return (c * point[0] - s * point[1], s * point[0] + c * point[1])
+
+
+def binary_link_point(p1, p2, q1, q2, q):
+    """Global position of the local point ``q`` of a link from the positions of two of its points.
+
+    A rigid planar body is fixed by two of its points: if its local points ``q1`` and
+    ``q2`` sit at global ``p1`` and ``p2``, the local point ``q`` sits at
+    ``p1 + M (p2 - p1)`` where ``M`` is the rotation-and-scale taking ``q2 - q1`` to
+    ``q - q1`` (the complex ratio ``(q - q1)/(q2 - q1)``). This is the lecture's
+    decomposition of the coupler of a four-bar: a point of the coupler is a fixed
+    complex multiple of the vector between its two joints. Works with numbers and
+    sympy expressions alike.
+    """
+    ux, uy = q2[0] - q1[0], q2[1] - q1[1]
+    vx, vy = q[0] - q1[0], q[1] - q1[1]
+    den = ux * ux + uy * uy
+    cr = (vx * ux + vy * uy) / den
+    ci = (vy * ux - vx * uy) / den
+    dx, dy = p2[0] - p1[0], p2[1] - p1[1]
+    return (p1[0] + cr * dx - ci * dy, p1[1] + ci * dx + cr * dy)
+
+
+def circle_intersection(c0, r0, c1, r1, side=1):
+    """Intersection of the circles ``|p - c0| = r0`` and ``|p - c1| = r1`` on one side of ``c0 -> c1``.
+
+    Vectorized: centres may be arrays of shape ``(..., 2)`` given as pairs ``(x, y)`` of
+    arrays; radii are numbers. ``side = +1`` takes the point to the left of the
+    direction from ``c0`` to ``c1`` (counter-clockwise), ``-1`` the one to the right.
+
+    Parameters
+    ----------
+    c0, c1 : (array_like, array_like)
+        Centres ``(x, y)`` (m).
+    r0, r1 : float
+        Radii (m), > 0.
+    side : {1, -1} or array_like
+        Which of the two intersections.
+
+    Returns
+    -------
+    (x, y, ok)
+        The intersection (m) and a boolean mask, false where the circles do not meet (or
+        the centres coincide); there ``x``, ``y`` are those of the nearest tangent point.
+
+    Examples
+    --------
+    >>> x, y, ok = circle_intersection((0.0, 0.0), 1.0, (1.0, 0.0), 1.0)
+    >>> round(float(x), 12), round(float(y), 12), bool(ok)
+    (0.5, 0.866025403784, True)
+    """
+    dx, dy = np.subtract(c1[0], c0[0]), np.subtract(c1[1], c0[1])
+    d = np.hypot(dx, dy)
+    ds = np.where(d > 0, d, 1.0)
+    a = (r0 * r0 - r1 * r1 + d * d) / (2 * ds)
+    ok = (d > 0) & (np.abs(a) <= r0 * (1 + 1e-12))
+    h = np.sqrt(np.clip(r0 * r0 - a * a, 0.0, None))
+    ux, uy = dx / ds, dy / ds
+    return c0[0] + a * ux - side * h * uy, c0[1] + a * uy + side * h * ux, ok

@@ -1,0 +1,159 @@
+"""The registry of worked examples: each method declares its examples next to its code.
+
+A method module registers an example with the :func:`example` decorator (the
+decorated function called with fixed arguments) or, for an example that needs a
+little set-up, with :func:`register` and a zero-argument factory. The catalog, the
+gallery, the course order and the marks of the deliberately unbalanced examples all
+come from here. Layer: methods; imports only ``core``.
+
+Course order: examples are sorted by ``chapter`` (of the course book), then by the
+order of the method families in :data:`FAMILIES`, then by where they are declared: the
+modules in the order the family's ``__init__`` imports them, and within a module from
+top to bottom (stacked decorators included).
+"""
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import sys
+from dataclasses import dataclass, field
+from typing import Callable
+
+from ..core.design import Design
+
+__all__ = ["Example", "example", "register", "examples", "FAMILIES"]
+
+#: The method families, in the order the course meets them within a chapter.
+FAMILIES = ("lecture", "singh", "realize", "lustig", "deepak")
+
+_REGISTRY: dict[str, "Example"] = {}
+_MODULES: dict[str, int] = {}  # module -> the order in which it first registered
+
+
+def _where(depth: int) -> tuple:
+    """Sort key of a declaration: (module order, line, count) of the caller ``depth`` frames up."""
+    frame = sys._getframe(depth + 1)
+    module = frame.f_globals.get("__name__", "")
+    _MODULES.setdefault(module, len(_MODULES))
+    return (_MODULES[module], frame.f_lineno, len(_REGISTRY))
+
+
+@dataclass(frozen=True)
+class Example:
+    """A worked example: a zero-argument callable returning a :class:`Design`.
+
+    Attributes
+    ----------
+    name : str
+        Short name, unique across the library (the catalog key).
+    title : str
+        One line: what it is and where it comes from.
+    chapter : int
+        Chapter of the course book that presents it.
+    function : callable
+        The method (or factory) that builds it.
+    expected_balanced : bool
+        ``False`` for the deliberate counter-examples (an ordinary spring where a ZFL
+        spring is needed, an approximate balance).
+    """
+
+    name: str
+    title: str
+    chapter: int
+    function: Callable[..., Design]
+    expected_balanced: bool = True
+    args: tuple = ()
+    kwargs: dict = field(default_factory=dict)
+    family: str = ""
+    index: tuple = ()
+
+    def __call__(self) -> Design:
+        return self.function(*self.args, **self.kwargs)
+
+    def __repr__(self) -> str:
+        return f"<example {self.name!r}: {self.title}>"
+
+
+def _family(module: str) -> str:
+    parts = module.split(".")
+    for fam in FAMILIES:
+        if fam in parts:
+            return fam
+    raise ValueError(f"examples must be registered from a method family module {FAMILIES}, "
+                     f"not {module!r}")
+
+
+def register(name: str, title: str, factory: Callable[..., Design], *, chapter: int,
+             expected_balanced: bool = True, args: tuple = (), kwargs: dict | None = None,
+             _depth: int = 1) -> None:
+    """Register a worked example built by ``factory(*args, **kwargs)``.
+
+    Parameters
+    ----------
+    name : str
+        Unique short name.
+    title : str
+        One line for the gallery and the catalog.
+    factory : callable
+        Returns a :class:`Design`.
+    chapter : int
+        Chapter of the course book (1-6).
+    expected_balanced : bool
+        ``False`` for a deliberate counter-example.
+    args, kwargs
+        Fixed arguments of ``factory``.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is already registered for another example.
+    """
+    if not name or not isinstance(name, str):
+        raise TypeError(f"name must be a non-empty str, got {name!r}")
+    if isinstance(chapter, bool) or not isinstance(chapter, int) or chapter < 1:
+        raise ValueError(f"chapter must be a chapter number >= 1, got {chapter!r}")
+    entry = Example(name, title, chapter, factory, bool(expected_balanced), tuple(args),
+                    dict(kwargs or {}), _family(factory.__module__), _where(_depth))
+    old = _REGISTRY.get(name)
+    if old is not None and (old.function, old.args, old.kwargs) != (factory, entry.args, entry.kwargs):
+        raise ValueError(f"a worked example named {name!r} is already registered")
+    if old is None:
+        _REGISTRY[name] = entry
+
+
+def example(name: str, title: str, *, chapter: int, expected_balanced: bool = True, **kwargs):
+    """Decorator: register the decorated method, called with ``kwargs``, as a worked example.
+
+    Stack several to register several examples of one method.
+
+    Examples
+    --------
+    >>> from balancelab.methods.registry import examples
+    >>> examples()["lacoste_lever"].kwargs
+    {'weight': 10.0, 'l': 0.5, 'a_x': 0.2, 'b_y': 0.3}
+    """
+    where = _where(1)
+
+    def decorate(fn):
+        register(name, title, fn, chapter=chapter, expected_balanced=expected_balanced, kwargs=kwargs,
+                 _depth=1)
+        _REGISTRY[name] = dataclasses.replace(_REGISTRY[name], index=where)
+        return fn
+
+    return decorate
+
+
+def examples() -> dict[str, Example]:
+    """Every registered example, in course order (see the module docstring).
+
+    Importing the method families registers their examples; this imports them all.
+
+    Returns
+    -------
+    dict
+        Short name -> :class:`Example`.
+    """
+    for fam in FAMILIES:
+        importlib.import_module(f"balancelab.methods.{fam}")
+    order = sorted(_REGISTRY.values(), key=lambda e: (e.chapter, FAMILIES.index(e.family), e.index))
+    return {e.name: e for e in order}

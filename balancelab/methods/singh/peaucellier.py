@@ -1,0 +1,113 @@
+"""The Peaucellier-Lipkin writing board balanced by ZFL springs (Singh Sec. III.B).
+
+Bodies (Singh's numbering): 0 ground; 1 crank from pivot ``A`` to ``C``; 2 and 3 the long
+arms from pivot ``O`` to ``D`` and ``E``; 4 and 5 rhombus sides ``C-D`` and ``C-E``; 6 and 7
+rhombus sides ``D-P`` and ``E-P``. With ``|OA| = |AC| = d`` the point ``P`` (the board) moves
+on the vertical line ``x = (l^2 - s^2) / (2 d)``: the inversion ``OC . OP = l^2 - s^2``.
+
+Balancing (the paper's construction): the weights of bodies 4 and 5 are split between
+their end joints; the crank then is a lever carrying ``W1`` at its midpoint and
+``(W4 + W5)/2`` at ``C``, balanced by one ZFL spring with minimum preload (eqs 18-20).
+Bodies 2-6 and 3-7 are two identical 2R arms (the board's load ``Wb`` split between them),
+each balanced by two ZFL springs on its second body only: with ``a_x2 = -a_x3`` and the
+minimum-preload anchors of eqs 29-31, eq. 51 with zero left side gives
+``k2 = k3 = (W_1' p_x1' + W_2' l) / (2 l^2)`` and ``a_x2 = l sqrt(W_2' p_x2' / (W_1' p_x1' + W_2' l))``
+(primes: the 2R's own loads). Each part is balanced for every value of its own angles,
+so the whole linkage is balanced.
+
+Assumed geometry: the paper's Figs 8-10 are not in its text. With the printed loads, the
+values here reproduce every printed spring number (``k1 = 45.88``, ``k2 = k3 = 33.02`` N/m,
+``a_x2 = -a_x3 = 0.468``, ``b_y2 = 1.218``, ``b_y3 = 0.283`` m, ``a_x1 = b_y1 = 0.2`` m): crank
+``d = 0.22326`` m with its centre of mass at its midpoint; long arms ``l = 0.7505`` m
+(``(b_y2 + b_y3)/2``) with their centres of mass ``0.232`` m from ``O``; rhombus sides
+``s = 0.363`` m with centres of mass at their midpoints; the board's ``Wb = 72.03`` N acts
+at ``P``.
+"""
+from __future__ import annotations
+
+import math
+
+
+from ..registry import example
+from ...core.design import Design
+from ...core.elements import Joint, Load, Spring
+from ...core.validation import finite_real
+from ...mechanisms.peaucellier import PEAUCELLIER_BODIES, PeaucellierKinematics
+
+__all__ = ["peaucellier_board"]
+
+
+@example("peaucellier_board", "Peaucellier-Lipkin writing board (Singh Sec. III.B: k1 = 45.88, "
+         "k2 = k3 = 33.02 N/m)", chapter=6)
+def peaucellier_board(W=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), Wb: float = 72.03,
+                      d: float = 0.22326, l: float = 0.7505, s: float = 0.363, p_arm: float = 0.232,
+                      a_x1: float = 0.2) -> Design:
+    """The Peaucellier-Lipkin writing board of Singh & Ananthasuresh, balanced (Sec. III.B).
+
+    Parameters
+    ----------
+    W : seven floats
+        Weights of bodies 1-7 (N), > 0 (the paper's ``W1 ... W7``).
+    Wb : float
+        The board's load at ``P`` (N), >= 0.
+    d, l, s : float
+        Crank, long arm and rhombus side (m).
+    p_arm : float
+        Centre of mass of arms 2 and 3 from ``O`` (m).
+    a_x1 : float
+        Attachment of the crank's spring (m), > 0; its anchor is ``a_x1`` above ``A``.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> d = peaucellier_board()
+    >>> round(d.parameters["k1"], 2), round(d.parameters["k2"], 2), round(d.parameters["a_x2"], 3)
+    (45.88, 33.02, 0.468)
+    """
+    if len(W) != 7:
+        raise ValueError(f"W must hold the seven body weights W1..W7 (N), got {len(W)} values")
+    W = [finite_real(f"W{i + 1} (N)", v, positive=True) for i, v in enumerate(W)]
+    Wb = finite_real("Wb (board load, N)", Wb, nonnegative=True)
+    p_arm = finite_real("p_arm (m)", p_arm, positive=True)
+    a_x1 = finite_real("a_x1 (m)", a_x1, positive=True)
+    kin = PeaucellierKinematics(d, l, s)
+    d, l, s = kin.d, kin.l, kin.s
+    # lever: crank with W1 at its midpoint and half of W4 and W5 at C (eqs 18-20)
+    moment1 = W[0] * d / 2 + (W[3] + W[4]) / 2 * d
+    k1 = moment1 / a_x1 ** 2
+    # each 2R: first body = arm (W2 at p_arm, W4/2 at D), second = side (W6 at s/2, Wb/2 at P)
+    first = W[1] * p_arm + (W[3] / 2 + W[5] + Wb / 2) * l
+    second = W[5] * s / 2 + Wb / 2 * s
+    k2 = first / (2 * l * l)
+    ax2 = l * math.sqrt(second / first)
+    by2, by3 = ax2 + l, -ax2 + l
+    A = (d, 0.0)
+    loads = [Load(1, (d / 2, 0.0), (0.0, -W[0]), "W1", kind="weight"),
+             Load(2, (p_arm, 0.0), (0.0, -W[1]), "W2", kind="weight"),
+             Load(3, (p_arm, 0.0), (0.0, -W[2]), "W3", kind="weight"),
+             Load(4, (s / 2, 0.0), (0.0, -W[3]), "W4", kind="weight"),
+             Load(5, (s / 2, 0.0), (0.0, -W[4]), "W5", kind="weight"),
+             Load(6, (s / 2, 0.0), (0.0, -W[5]), "W6", kind="weight"),
+             Load(7, (s / 2, 0.0), (0.0, -W[6]), "W7", kind="weight")]
+    if Wb > 0:  # the board hangs at P, the joint of sides 6 and 7: half on each side
+        loads += [Load(6, (s, 0.0), (0.0, -Wb / 2), "Wb/2", kind="force"),
+                  Load(7, (s, 0.0), (0.0, -Wb / 2), "Wb/2", kind="force")]
+    springs = [Spring(k1, 0.0, (0, (A[0], a_x1)), (1, (a_x1, 0.0)), name="k1")]
+    for body, tag in ((6, "D"), (7, "E")):
+        springs.append(Spring(k2, 0.0, (0, (0.0, by2)), (body, (ax2, 0.0)), name=f"k2{tag}"))
+        springs.append(Spring(k2, 0.0, (0, (0.0, by3)), (body, (-ax2, 0.0)), name=f"k3{tag}"))
+    joints = [Joint(0, A, 1, (0.0, 0.0)), Joint(0, (0.0, 0.0), 2, (0.0, 0.0)),
+              Joint(0, (0.0, 0.0), 3, (0.0, 0.0)), Joint(1, (d, 0.0), 4, (0.0, 0.0)),
+              Joint(1, (d, 0.0), 5, (0.0, 0.0)), Joint(2, (l, 0.0), 4, (s, 0.0)),
+              Joint(3, (l, 0.0), 5, (s, 0.0)), Joint(2, (l, 0.0), 6, (0.0, 0.0)),
+              Joint(3, (l, 0.0), 7, (0.0, 0.0)), Joint(6, (s, 0.0), 7, (s, 0.0))]
+    return Design("Peaucellier-Lipkin writing board", PEAUCELLIER_BODIES, joints, kin, loads, springs,
+                  labels={"O": (0, (0.0, 0.0)), "A": (0, A), "C": (1, (d, 0.0)), "D": (2, (l, 0.0)),
+                          "E": (3, (l, 0.0)), "P": (6, (s, 0.0))},
+                  parameters={"k1": k1, "a_x1": a_x1, "b_x1": 0.0, "b_y1": a_x1, "k2": k2, "k3": k2,
+                              "a_x2": ax2, "a_x3": -ax2, "b_y2": by2, "b_y3": by3,
+                              "line_x": kin.line_x, "travel": 2 * math.sqrt((l + s) ** 2 - kin.line_x ** 2)},
+                  reference="Singh & Ananthasuresh, Sec. III.B (eqs 18-20, 29-34, 51)")

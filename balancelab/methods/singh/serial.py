@@ -1,0 +1,347 @@
+"""Singh & Ananthasuresh: 2R arms balanced by three ZFL springs from the ground, with minimum preload.
+
+Three ZFL springs, one to link 1 and two to link 2, simplified (eqs 21-28) and general
+(eqs 35-49), with minimum preload (eqs 29-34, 42-49); the two-spring variant (eq. 50);
+the free-choice count (Table II). Coordinates: absolute link angles ``theta_1``,
+``theta_2``; link 2 is pivoted at distance ``l`` on link 1.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..registry import example
+from ...core.design import Design
+from ...core.elements import Load, Spring, SymbolicParts
+from ...core.validation import finite_real, planar_point
+from ...mechanisms.base import TreeKinematics
+from ...mechanisms.chain import TWO_TURNS, serial_2r_joints, serial_2r_kinematics
+
+__all__ = ["serial_2r_simplified", "serial_2r_min_preload", "serial_2r_two_springs", "max_work_angle",
+           "free_choice_count"]
+
+
+def _singh_symbolic(general: bool):
+    import sympy as sp
+
+    W1, W2, l, g = sp.symbols("W_1 W_2 l g", positive=True)
+    px1, py1, px2 = sp.symbols("p_x1 p_y1 p_x2", real=True)
+    k = sp.symbols("k_1:4", positive=True)
+    ax = sp.symbols("a_x1:4", real=True)
+    bx = sp.symbols("b_x1:4", real=True) if general else (0, 0, 0)
+    by = sp.symbols("b_y1:4", real=True)
+    loads = ((1, (px1, py1 if general else 0), (0, -W1)), (2, (px2, 0), (0, -W2)))
+    springs = tuple((k[i], 0, (0, (bx[i], by[i])), (1 if i == 0 else 2, (ax[i], 0))) for i in range(3))
+    return (W1, W2, l, px1, py1, px2, k, ax, bx, by), loads, springs
+
+
+def _singh_design(name, W1, W2, p1, px2, l, ax, bx, by, ks, reference, parameters) -> Design:
+    general = p1[1] != 0 or any(v != 0 for v in bx)
+    (W1s, W2s, ls, px1s, py1s, px2s, k, axs, bxs, bys), loads, springs = _singh_symbolic(general)
+    values = {W1s: W1, W2s: W2, ls: l, px1s: p1[0], px2s: px2, **dict(zip(k, ks)),
+              **dict(zip(axs, ax)), **dict(zip(bys, by))}
+    if general:
+        values[py1s] = p1[1]
+        values.update(dict(zip(bxs, bx)))
+    springs_num, springs_sym = [], []
+    for i in range(3):
+        if ks[i] == 0:
+            continue
+        springs_num.append(Spring(ks[i], 0.0, (0, (bx[i], by[i])), (1 if i == 0 else 2, (ax[i], 0.0)),
+                                  name=f"k{i + 1}"))
+        springs_sym.append(springs[i])
+    labels = {"O": (0, (0.0, 0.0)), "J": (1, (l, 0.0))}
+    for i, s in enumerate(springs_num):
+        n = s.name[1:]
+        labels[f"a{n}"] = s.b
+        labels[f"b{n}"] = s.a
+    sym_kin = TreeKinematics(3, serial_2r_joints(ls), [[0, 0], [1, 0], [0, 1]], ("theta_1", "theta_2"),
+                             TWO_TURNS)
+    return Design(name, ("ground", "body 1", "body 2"), serial_2r_joints(l),
+                  serial_2r_kinematics(l),
+                  [Load(1, tuple(p1), (0.0, -W1), "W1", kind="weight"),
+                   Load(2, (px2, 0.0), (0.0, -W2), "W2", kind="weight")],
+                  springs_num, symbolic=SymbolicParts(loads, tuple(springs_sym), values, sym_kin),
+                  labels=labels, parameters=parameters, reference=reference)
+
+
+def _check_loads(W1, W2, p1, px2, l):
+    W1 = finite_real("W1 (weight on body 1, N)", W1, positive=True)
+    W2 = finite_real("W2 (weight on body 2, N)", W2, positive=True)
+    p1 = planar_point("p1 (point of W1 on body 1, m)", p1)
+    px2 = finite_real("p_x2 (point of W2 on body 2, m)", px2)
+    l = finite_real("l (length of body 1, m)", l, positive=True)
+    return W1, W2, p1, px2, l
+
+
+def _positive_k(name, value, hint):
+    if not math.isfinite(value):
+        raise ValueError(f"{name} is infinite for these free choices ({hint})")
+    if value <= 0:
+        raise ValueError(f"{name} = {value:.6g} N/m is not positive for these free choices, so no "
+                         f"spring can realize it ({hint})")
+    return value
+
+
+@example("serial_2r_simplified", "Simplified 2R with three ZFL springs (Singh eqs 21-28)", chapter=4)
+def serial_2r_simplified(W1: float = 10.0, W2: float = 20.0, p_x1: float = 1.0, p_x2: float = 2.0,
+                         l: float = 1.5, a_x1: float = 1.0, b_y1: float = 1.0, a_x2: float = 2.0,
+                         b_y2: float = 3.5, a_x3: float = -2.0, b_y3: float = -0.5) -> Design:
+    """Singh & Ananthasuresh's simplified 2R with three ZFL springs (eqs 21-28).
+
+    Loads ``W1`` at ``(p_x1, 0)`` on body 1 and ``W2`` at ``(p_x2, 0)`` on body 2; springs
+    from ground anchors ``(0, b_yi)`` to ``(a_x1, 0)`` on body 1 and to ``(a_x2, 0)``,
+    ``(a_x3, 0)`` on body 2. The coefficients of ``sin theta_1``, ``sin theta_2`` and
+    ``cos(theta_1 - theta_2)`` vanish (eqs 22-24) when
+
+    ``k2 = W2 p_x2 / (a_x2 (b_y2 - b_y3))`` (eq. 26), ``k3 = -W2 p_x2 / (a_x3 (b_y2 - b_y3))``
+    (eq. 27) and ``k1 = (W1 p_x1 + W2 l - l (k2 b_y2 + k3 b_y3)) / (a_x1 b_y1)`` (eq. 25).
+
+    Parameters
+    ----------
+    W1, W2 : float
+        Weights (N), > 0.
+    p_x1, p_x2 : float
+        Their points along bodies 1 and 2 (m).
+    l : float
+        Length of body 1 (m), > 0.
+    a_x1, b_y1, a_x2, b_y2, a_x3, b_y3 : float
+        The six free choices (m); ``a_x2 != a_x3`` ... see Raises.
+
+    Returns
+    -------
+    Design
+
+    Raises
+    ------
+    ValueError
+        For a singular choice (``b_y2 == b_y3``, ``a_x2 == 0``, ``a_x3 == 0``,
+        ``a_x1 b_y1 == 0``) or one that needs a non-positive stiffness.
+
+    Examples
+    --------
+    >>> d = serial_2r_simplified()
+    >>> round(d.parameters["k2"], 3), round(d.parameters["k3"], 3)
+    (5.0, 5.0)
+    """
+    W1, W2, p1, p_x2, l = _check_loads(W1, W2, (p_x1, 0.0), p_x2, l)
+    vals = {n: finite_real(f"{n} (m)", v) for n, v in
+            dict(a_x1=a_x1, b_y1=b_y1, a_x2=a_x2, b_y2=b_y2, a_x3=a_x3, b_y3=b_y3).items()}
+    if vals["b_y2"] == vals["b_y3"]:
+        raise ValueError("b_y2 == b_y3 is singular: eqs 26-27 divide by b_y2 - b_y3")
+    for n in ("a_x2", "a_x3"):
+        if vals[n] == 0:
+            raise ValueError(f"{n} == 0 is singular: a spring attached at the joint cannot act on body 2")
+    if vals["a_x1"] * vals["b_y1"] == 0:
+        raise ValueError("a_x1 and b_y1 must be non-zero: eq. 25 divides by a_x1 b_y1")
+    dy = vals["b_y2"] - vals["b_y3"]
+    hint = "choose a_x2 > 0 > a_x3 with b_y2 > b_y3"
+    k2 = _positive_k("k2", W2 * p_x2 / (vals["a_x2"] * dy), hint)
+    k3 = _positive_k("k3", -W2 * p_x2 / (vals["a_x3"] * dy), hint)
+    k1 = _positive_k("k1", (W1 * p1[0] + W2 * l - l * (k2 * vals["b_y2"] + k3 * vals["b_y3"]))
+                     / (vals["a_x1"] * vals["b_y1"]), "a_x1 b_y1 must have the sign of the load term")
+    ax = (vals["a_x1"], vals["a_x2"], vals["a_x3"])
+    by = (vals["b_y1"], vals["b_y2"], vals["b_y3"])
+    return _singh_design("simplified 2R, three ZFL springs", W1, W2, p1, p_x2, l, ax, (0.0,) * 3, by,
+                         (k1, k2, k3), "Singh & Ananthasuresh, eqs 21-28",
+                         {"k1": k1, "k2": k2, "k3": k3, **vals})
+
+
+def max_work_angle(W1: float, W2: float, p1, l: float) -> float:
+    """Angle of body 1 at which the loads' energy is largest (Singh eq. 35), with ``atan2``.
+
+    The loads' energy ``(W1 p_x1 + W2 l) sin theta_1 + W1 p_y1 cos theta_1 + ...`` is
+    largest at ``theta_1 = atan2(W1 p_x1 + W2 l, W1 p_y1)``. The paper writes a plain
+    ``tan^-1`` of the ratio, which picks the wrong quadrant when ``p_y1 < 0``.
+
+    Parameters
+    ----------
+    W1, W2 : float
+        Weights (N).
+    p1 : (float, float)
+        Point of ``W1`` on body 1 (m).
+    l : float
+        Length of body 1 (m).
+
+    Returns
+    -------
+    float
+        The angle (rad).
+
+    Examples
+    --------
+    >>> round(math.degrees(max_work_angle(10, 20, (1.0, 0.5), 1.5)), 3)
+    82.875
+    >>> round(math.degrees(max_work_angle(10, 20, (1.0, -0.5), 1.5)), 3)
+    97.125
+    """
+    return math.atan2(W1 * p1[0] + W2 * l, W1 * p1[1])
+
+
+def _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3):
+    """Anchors (eqs 42-46) and stiffnesses (eqs 47-49, projected form) of the min-preload 2R."""
+    th = max_work_angle(W1, W2, p1, l)
+    c, s = math.cos(th), math.sin(th)
+    b1 = (ax1 * c, ax1 * s)
+    b2 = (l * c, ax2 + l * s)
+    b3 = (l * c, ax3 + l * s)
+    k2 = W2 * p_x2 / (ax2 * (ax2 - ax3))
+    k3 = -W2 * p_x2 / (ax3 * (ax2 - ax3))
+    k1 = ((W1 * p1[0] + W2 * l - l * (k2 * b2[1] + k3 * b3[1])) * s
+          + (W1 * p1[1] - l * (k2 * b2[0] + k3 * b3[0])) * c) / ax1 ** 2
+    return th, b1, b2, b3, k1, k2, k3
+
+
+@example("serial_2r_min_preload", "General 2R with minimum preload (Singh eqs 35-49, Sec. III.A numbers)",
+         chapter=4)
+def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x2: float = 2.0,
+                          l: float = 1.5, a_x=(1.0, 2.0, -2.0)) -> Design:
+    """2R balanced by three ZFL springs with the least preload (Singh eqs 29-49).
+
+    Every spring has zero length in the configuration of maximum external work,
+    ``theta_2 = 90 deg`` and ``theta_1 = theta*`` of eq. 35 (computed with ``atan2``), so
+    the balanced energy equals the largest energy of the loads, its lower bound. With
+    the free choices ``a_x1, a_x2, a_x3`` the anchors are (eqs 42-46)
+    ``b_1 = a_x1 (cos theta*, sin theta*)``, ``b_2 = (l cos theta*, a_x2 + l sin theta*)``,
+    ``b_3 = (l cos theta*, a_x3 + l sin theta*)`` and the stiffnesses (eqs 47-49)
+    ``k2 = W2 p_x2 / (a_x2 (a_x2 - a_x3))``, ``k3 = -W2 p_x2 / (a_x3 (a_x2 - a_x3))``, and
+    ``k1`` from eqs 40-41. Eq. 49 divides by ``cos theta*``, which vanishes in the
+    simplified case ``p_y1 = 0`` (eqs 29-34); we use the equivalent form
+    ``k1 a_x1^2 = [W1 p_x1 + W2 l - l(k2 b_y2 + k3 b_y3)] sin theta* + [W1 p_y1 - l(k2 + k3) b_x2] cos theta*``,
+    valid in both cases.
+
+    With the defaults this is the 2R of the paper's four-bar example (Sec. III.A:
+    ``W1 = 10 N``, ``W2 = 20 N``, ``p1 = (1, 0.5) m``, ``p_x2 = 2 m``, ``a_x = (1, 2, -2) m``);
+    ``l = 1.5 m`` is not printed but is the length for which the printed
+    ``b_x1 = 0.124 m`` and ``b_y1 = 0.9923 m`` follow.
+
+    Parameters
+    ----------
+    W1, W2 : float
+        Weights (N), > 0.
+    p1 : (float, float)
+        Point of W1 on body 1 (m).
+    p_x2 : float
+        Point of W2 along body 2 (m), != 0.
+    l : float
+        Length of body 1 (m), > 0.
+    a_x : (float, float, float)
+        Free choices ``a_x1, a_x2, a_x3`` (m); ``a_x2 > 0 > a_x3`` for ``p_x2 > 0``.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> d = serial_2r_min_preload()
+    >>> round(d.parameters["k1"], 2), round(d.parameters["b_y2"], 4)
+    (17.81, 3.4884)
+    """
+    W1, W2, p1, p_x2, l = _check_loads(W1, W2, p1, p_x2, l)
+    try:
+        ax1, ax2, ax3 = (finite_real(f"a_x{i + 1} (m)", v) for i, v in enumerate(a_x))
+    except (TypeError, ValueError) as err:
+        raise type(err)(f"a_x must be three numbers (a_x1, a_x2, a_x3) in metres: {err}") from None
+    if ax2 == ax3:
+        raise ValueError("a_x2 == a_x3 is singular: eqs 47-48 divide by a_x2 - a_x3")
+    if ax1 == 0 or ax2 == 0 or ax3 == 0:
+        raise ValueError("a_x1, a_x2 and a_x3 must be non-zero: a spring attached at a joint "
+                         "cannot balance the body")
+    if p_x2 == 0:
+        raise ValueError("p_x2 must be non-zero: with W2 on the elbow, body 2 needs no springs")
+    th, b1, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3)
+    c, s = math.cos(th), math.sin(th)
+    hint = "choose a_x2 and a_x3 on opposite sides of the elbow"
+    _positive_k("k2", k2, hint)
+    _positive_k("k3", k3, hint)
+    k1 = _positive_k("k1", k1, "choose another a_x2, a_x3")
+    params = {"theta_star": th, "k1": k1, "k2": k2, "k3": k3, "a_x1": ax1, "a_x2": ax2, "a_x3": ax3,
+              "b_x1": b1[0], "b_y1": b1[1], "b_x2": b2[0], "b_y2": b2[1], "b_x3": b3[0], "b_y3": b3[1],
+              "PE_min": (W1 * p1[0] + W2 * l) * s + W1 * p1[1] * c + W2 * p_x2}
+    return _singh_design("2R with minimum preload, three ZFL springs", W1, W2, p1, p_x2, l,
+                         (ax1, ax2, ax3), (b1[0], b2[0], b3[0]), (b1[1], b2[1], b3[1]), (k1, k2, k3),
+                         "Singh & Ananthasuresh, eqs 35-49", params)
+
+
+@example("serial_2r_two_springs", "General 2R with two ZFL springs (Singh eq. 50)", chapter=4)
+def serial_2r_two_springs(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x2: float = 2.0,
+                          l: float = 1.5, a_x2: float = 2.0) -> Design:
+    """The general 2R balanced by only two ZFL springs, both on body 2 (Singh eq. 50).
+
+    Setting ``k1 = 0`` in eq. 49 fixes ``a_x2 a_x3 = -l W2 p_x2 b_x2 / (W1 p_y1)``; the
+    springs keep the minimum-preload anchors of eqs 44-48. It needs ``p_y1 != 0`` (for
+    ``p_y1 = 0`` spring 1 cannot be removed).
+
+    Parameters
+    ----------
+    W1, W2, p1, p_x2, l : see :func:`serial_2r_min_preload`.
+    a_x2 : float
+        The free choice (m); ``a_x3`` follows from eq. 50.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> d = serial_2r_two_springs()
+    >>> len(d.springs), round(d.parameters["a_x3"], 4)
+    (2, -1.1163)
+    """
+    W1, W2, p1, p_x2, l = _check_loads(W1, W2, p1, p_x2, l)
+    a_x2 = finite_real("a_x2 (m)", a_x2)
+    if p1[1] == 0:
+        raise ValueError("p_y1 must be non-zero: with W1 on the line of body 1 (p_y1 = 0) eq. 50 has "
+                         "no solution and body 1 needs its own spring")
+    if a_x2 == 0:
+        raise ValueError("a_x2 must be non-zero")
+    th = max_work_angle(W1, W2, p1, l)
+    bx2 = l * math.cos(th)
+    a_x3 = -l * W2 * p_x2 * bx2 / (W1 * p1[1] * a_x2)
+    th, _, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, 1.0, a_x2, a_x3)
+    hint = "a_x2 must lie on the side of W2"
+    _positive_k("k2", k2, hint)
+    _positive_k("k3", k3, hint)
+    ax = (1.0, a_x2, a_x3)
+    bx = (0.0, b2[0], b3[0])
+    by = (0.0, b2[1], b3[1])
+    params = {"theta_star": th, "k2": k2, "k3": k3, "a_x2": a_x2, "a_x3": a_x3, "b_x2": b2[0],
+              "b_y2": b2[1], "b_x3": b3[0], "b_y3": b3[1], "k1_eq49": k1}
+    return _singh_design("2R with two ZFL springs", W1, W2, p1, p_x2, l, ax, bx, by,
+                         (0.0, k2, k3), "Singh & Ananthasuresh, eq. 50",
+                         params)
+
+
+def free_choice_count(N: int) -> dict:
+    """Free choices left after balancing with minimum preload (Singh Table II).
+
+    A linkage of ``N`` bodies with one body pivoted to the ground needs ``2N - 1`` ZFL
+    springs (one on the grounded body, two on each other body) governed by ``4N - 2``
+    balance equations; each spring has five parameters (``k`` and four anchor
+    coordinates) and minimum preload adds one zero-length condition per spring.
+
+    Parameters
+    ----------
+    N : int
+        Number of moving bodies, >= 1.
+
+    Returns
+    -------
+    dict
+        ``springs``, ``parameters``, ``equations``, ``min_preload_conditions`` and
+        ``free`` (= parameters - equations - min_preload_conditions).
+
+    Examples
+    --------
+    >>> free_choice_count(2)["free"]
+    6
+    """
+    if isinstance(N, bool) or not isinstance(N, (int, np.integer)) or N < 1:
+        raise ValueError(f"N must be a whole number of bodies >= 1, got {N!r}")
+    springs = 2 * N - 1
+    params = 5 * springs
+    equations = 2 + 4 * (N - 1)
+    return {"N": int(N), "springs": springs, "parameters": params, "equations": equations,
+            "min_preload_conditions": springs, "free": params - equations - springs}

@@ -1,0 +1,499 @@
+"""Animations that play on a static web page: a design moving, or a design parameter swept.
+
+Both functions return a :class:`matplotlib.animation.FuncAnimation` whose
+``to_jshtml()`` is a self-contained JavaScript player (frames embedded as images, a
+scrubber and play buttons), so the built book plays it with no kernel and no network.
+The defaults keep one embedded animation under 2 MB and at 24 frames per second
+(20 for parameter sweeps).
+
+* :func:`animate` moves a design through its configuration range beside its energy
+  curve, with a marker riding on the curve.
+* :func:`animate_parameter` rebuilds the design for each value of one parameter (the
+  free choice ``a_x`` of a lever, a pulley radius, the position of a pivot on its
+  locus ...): scrubbing the player is the static-page counterpart of a lab's slider.
+"""
+from __future__ import annotations
+
+import math
+from typing import Callable, Mapping, Sequence
+
+import numpy as np
+
+from ..core.design import Design
+from .plotting import (Drawing, EnergyView, _check_design, _extent, _Geometry, default_q,
+                       energy_limits)
+
+__all__ = ["animate", "animate_parameter", "configuration_path"]
+
+#: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB.
+FIGSIZE = (6.4, 2.8)
+DPI = 75
+
+
+def _compact_png(rgb: np.ndarray, colors: int = 64) -> bytes:
+    """Pixels as a PNG of at most ``colors`` colours (line art loses nothing visible)."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    im = Image.fromarray(np.ascontiguousarray(rgb)).quantize(
+        colors=colors, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
+    out = BytesIO()
+    im.save(out, format="png")
+    return out.getvalue()
+
+
+def _compact_writer_class():
+    from matplotlib.animation import HTMLWriter
+
+    class CompactHTMLWriter(HTMLWriter):
+        """HTMLWriter embedding palette PNG frames rendered by the animation's blitter."""
+
+        colors = 64
+        source = None
+
+        def grab_frame(self, **savefig_kwargs):
+            needed = ("_saved_frames", "_total_bytes", "_bytes_limit", "_hit_limit")
+            # Animation.save always passes the colours; other options need a real savefig
+            plain = set(savefig_kwargs) <= {"facecolor", "edgecolor", "transparent"} and \
+                not savefig_kwargs.get("transparent", False)
+            if (self.source is None or not plain or not self.embed_frames
+                    or self.frame_format != "png" or not all(hasattr(self, a) for a in needed)):
+                return super().grab_frame(**savefig_kwargs)
+            import base64
+
+            png = _compact_png(self.source._render_frame(), self.colors)
+            data = base64.encodebytes(png).decode("ascii")
+            self._total_bytes += len(data)
+            if self._total_bytes >= self._bytes_limit:
+                raise RuntimeError("the animation is larger than matplotlib's animation.embed_limit; "
+                                   "use fewer frames or a lower dpi")
+            self._saved_frames.append(data)
+            return None
+
+    return CompactHTMLWriter
+
+
+def _animation_class():
+    from matplotlib.animation import FuncAnimation
+
+    class BalanceAnimation(FuncAnimation):
+        """A FuncAnimation whose ``to_jshtml`` embeds compact palette PNG frames.
+
+        Frames are rendered by redrawing only the moving artists over a cached
+        background (``dynamic`` lists them; ``None`` means redraw everything).
+        """
+
+        dynamic = None
+        _compact_saving = False
+
+        def _render_frame(self) -> np.ndarray:
+            from .plotting import _Blitter
+
+            if self.dynamic is None:
+                self._fig.canvas.draw()
+                return np.asarray(self._fig.canvas.buffer_rgba())[..., :3]
+            if getattr(self, "_blitter", None) is None:
+                self._blitter = _Blitter(self._fig, self.dynamic)
+            return self._blitter.render()
+
+        def frame_image(self, i: int) -> np.ndarray:
+            """Pixels (h, w, 3) of frame ``i``, as embedded by :meth:`to_jshtml`."""
+            self._draw_was_started = True  # rendered by hand: no "deleted unrendered" warning
+            self._func(self._frames_list[i])
+            return self._render_frame()
+
+        def _post_draw(self, framedata, blit):
+            if self._compact_saving:
+                return  # the writer renders the frame itself, once
+            super()._post_draw(framedata, blit)
+
+        def to_jshtml(self, fps=None, embed_frames=True, default_mode=None):
+            """Self-contained HTML/JavaScript player of the animation (see matplotlib's)."""
+            if not embed_frames:
+                return super().to_jshtml(fps, embed_frames, default_mode)
+            if fps is None:
+                fps = 1000.0 / self._interval
+            if default_mode is None:
+                default_mode = "loop" if getattr(self, "_repeat", False) else "once"
+            key = (fps, default_mode)
+            cache = self.__dict__.setdefault("_balancelab_html", {})
+            if key not in cache:
+                import tempfile
+                from pathlib import Path
+
+                with tempfile.TemporaryDirectory() as tmp:
+                    path = Path(tmp, "animation.html")
+                    writer = _compact_writer_class()(fps=fps, embed_frames=True,
+                                                     default_mode=default_mode)
+                    writer.source = self
+                    self._compact_saving = True
+                    self._blitter = None
+                    try:
+                        self.save(str(path), writer=writer)
+                    finally:
+                        self._compact_saving = False
+                    cache[key] = _offline(path.read_text())
+            return cache[key]
+
+        def _repr_html_(self):
+            return self.to_jshtml()
+
+    return BalanceAnimation
+
+
+_ICONS = {
+    "fa fa-play fa-flip-horizontal": "&#9664;",
+    "fa fa-minus": "&minus;",
+    "fa fa-fast-backward": "&#9198;",
+    "fa fa-step-backward": "|&#9664;",
+    "fa fa-pause": "&#10074;&#10074;",
+    "fa fa-play": "&#9654;",
+    "fa fa-step-forward": "&#9654;|",
+    "fa fa-fast-forward": "&#9197;",
+    "fa fa-plus": "+",
+}
+
+
+def _offline(page: str) -> str:
+    """Make matplotlib's player self-contained: no icon font fetched from a CDN.
+
+    The buttons' Font Awesome icons become plain Unicode symbols, so the player looks
+    and works the same on a page opened with no network.
+    """
+    import re
+
+    page = re.sub(r'<link rel="stylesheet"\s*href="https?://[^"]*font-awesome[^"]*">\s*', "", page)
+    for cls, glyph in _ICONS.items():
+        page = page.replace(f'<i class="{cls}"></i>', f'<span aria-hidden="true">{glyph}</span>')
+    return page
+
+
+def _freeze_layout(fig) -> None:
+    """Lay the figure out once, then keep that layout (drawing frames gets ~2x faster)."""
+    fig.canvas.draw()
+    fig.set_layout_engine("none")
+
+
+def _figure(figsize, dpi, panels: int):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, dpi=dpi, layout="constrained")
+    FigureCanvasAgg(fig)
+    if panels == 2:
+        axes = fig.subplots(1, 2, width_ratios=(1, 1.15))
+    else:
+        axes = [fig.subplots(1, 1)]
+    return fig, list(axes)
+
+
+def configuration_path(design: Design, frames: int = 60) -> np.ndarray:
+    """A smooth closed path of reachable configurations through the design's range.
+
+    One coordinate: a full turn when the range is a whole revolution, otherwise a
+    smooth sweep from one end of the range to the other and back. Several
+    coordinates: a Lissajous path over 90 % of each range. Unreachable points of the
+    path are dropped.
+
+    Parameters
+    ----------
+    design : Design
+    frames : int
+        Number of configurations, >= 2.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m, dof)
+        ``m <= frames`` configurations (rad).
+
+    Raises
+    ------
+    ValueError
+        If fewer than two configurations of the path can be reached.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> configuration_path(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), 8).shape
+    (8, 1)
+    """
+    _check_design(design)
+    if isinstance(frames, bool) or not isinstance(frames, (int, np.integer)) or frames < 2:
+        raise ValueError(f"frames must be an integer >= 2, got {frames!r}")
+    lo, hi = design.q_range[:, 0], design.q_range[:, 1]
+    t = np.arange(frames) / frames
+    if design.dof == 1:
+        if hi[0] - lo[0] >= 2 * math.pi - 1e-9:
+            q = (lo[0] + (hi[0] - lo[0]) * t)[:, None]
+        else:
+            # a hair inside the ends, which an open range does not include
+            a, b = lo[0] + 1e-6 * (hi[0] - lo[0]), hi[0] - 1e-6 * (hi[0] - lo[0])
+            q = (a + (b - a) * 0.5 * (1 - np.cos(2 * math.pi * t)))[:, None]
+    else:
+        c, h = 0.5 * (lo + hi), 0.45 * (hi - lo)
+        cols = [c[i] + h[i] * np.sin(2 * math.pi * (i + 1) * t + 0.5 * i) for i in range(design.dof)]
+        q = np.stack(cols, axis=-1)
+    ok = design.reachable(q)
+    if ok.sum() < 2:
+        raise ValueError(f"{design.name}: fewer than two configurations of the animation path "
+                         "can be reached")
+    return q[ok]
+
+
+def _fps(fps) -> float:
+    if isinstance(fps, bool) or not isinstance(fps, (int, float, np.integer, np.floating)) or not fps > 0:
+        raise ValueError(f"fps must be a positive number of frames per second, got {fps!r}")
+    return float(fps)
+
+
+def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, figsize=FIGSIZE,
+            dpi: float = DPI, labels: bool = True):
+    """Animate a design through its range beside its energy curve.
+
+    Parameters
+    ----------
+    design : Design
+        Any design; designs with 1 or 2 coordinates also show their energy curve or
+        map with a marker at the current configuration.
+    frames : int
+        Number of frames (>= 2) of the default path (see :func:`configuration_path`).
+    fps : float
+        Frames per second of playback.
+    path : array_like, shape (m, dof), optional
+        Configurations (rad) to show instead of the default path (shape ``(m,)`` is
+        accepted for one coordinate).
+    figsize : (float, float)
+        Figure size (inches).
+    dpi : float
+        Resolution; with the defaults ``to_jshtml()`` stays under 2 MB.
+    labels : bool
+        Write the design's named points.
+
+    Returns
+    -------
+    matplotlib.animation.FuncAnimation
+        Call ``to_jshtml()`` to embed it in a page. Extra attributes: ``path`` (the
+        configurations), ``drawing`` (:class:`~balancelab.viz.Drawing`) and
+        ``energy`` (:class:`~balancelab.viz.EnergyView` or ``None``).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> anim = animate(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), frames=12)
+    >>> len(anim.path)
+    12
+    """
+    _check_design(design)
+    fps = _fps(fps)
+    if path is None:
+        path = configuration_path(design, frames)
+    else:
+        path = np.asarray(path, dtype=float)
+        if design.dof == 1 and path.ndim == 1:
+            path = path[:, None]
+        if path.ndim != 2 or path.shape[1] != design.dof or len(path) == 0:
+            raise ValueError(f"path must have shape (m, {design.dof}) (configurations in rad, m >= 1) for "
+                             f"the coordinates {design.q_names}, got shape {path.shape}")
+        design.poses(path)
+    show_energy = design.dof <= 2
+    fig, axes = _figure(figsize, dpi, 2 if show_energy else 1)
+    drawing = Drawing(design, path[0], axes[0], labels=labels)
+    axes[0].set_title(design.name, fontsize=9)
+    energy = None
+    if show_energy:
+        energy = EnergyView(design, axes[1], q=path[0], legend=True, title=False)
+        energy.ax.set_title(_verdict(energy), fontsize=9)
+
+    def frame(i):
+        drawing.update(path[i])
+        if energy is not None:
+            energy.set_q(path[i])
+        return drawing.artists + ([energy.marker] if energy is not None else [])
+
+    _freeze_layout(fig)
+    anim = _animation_class()(fig, frame, frames=len(path), interval=1000.0 / fps, blit=False,
+                              repeat=True, cache_frame_data=False)
+    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
+    # and do not warn when such an animation is dropped without being rendered
+    fig.canvas.mpl_disconnect(anim._first_draw_id)
+    anim._draw_was_started = True
+    anim._frames_list = list(range(len(path)))
+    anim.dynamic = lambda: drawing.artists + ([energy.marker] if energy is not None else [])
+    anim.path = path
+    anim.drawing = drawing
+    anim.energy = energy
+    anim.fps = fps
+    return anim
+
+
+def _verdict(view: EnergyView) -> str:
+    rep = view.report
+    if rep is None:
+        return "energy"
+    return "balanced: total energy constant" if rep.balanced else "not balanced"
+
+
+def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=None, *,
+                      fixed: Mapping | None = None, fps: float = 20, figsize=FIGSIZE, dpi: float = DPI,
+                      labels: bool = True, unit: str = ""):
+    """A scrubbable animation over one design parameter.
+
+    Frame ``i`` shows ``factory(**{name: values[i], **fixed})`` in configuration ``q``
+    beside its energy curve. A value for which the factory raises ``ValueError``
+    (including :class:`~balancelab.UnreachableConfiguration`) or an arithmetic error,
+    or for which ``q`` cannot be reached, becomes a frame with the error message
+    instead of the mechanism; the animation itself never fails on it.
+
+    Parameters
+    ----------
+    factory : callable
+        ``factory(**kwargs) -> Design``.
+    name : str
+        The swept keyword argument.
+    values : sequence of float
+        Its values, one per frame (at least one must give a design).
+    q : array_like, optional
+        Configuration (rad) to show; by default each design's :func:`default_q`.
+    fixed : mapping, optional
+        Other keyword arguments for the factory.
+    fps : float
+        Frames per second.
+    figsize, dpi : see :func:`animate`.
+    labels : bool
+        Write the designs' named points.
+    unit : str
+        Unit of the parameter for the titles (for example ``"m"``).
+
+    Returns
+    -------
+    matplotlib.animation.FuncAnimation
+        With attributes ``values``, ``designs`` (a Design or ``None`` per frame),
+        ``messages`` (``""`` or the error text per frame), ``drawing`` and ``energy``.
+
+    Raises
+    ------
+    ValueError
+        If no value gives a valid design.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> anim = animate_parameter(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x",
+    ...                          [0.0, 0.1, 0.2], unit="m")
+    >>> [m[:8] for m in anim.messages]
+    ['a_x = 0 ', '', '']
+    """
+    if not callable(factory):
+        raise TypeError("factory must be callable: factory(**{name: value}) -> Design")
+    if not isinstance(name, str) or not name:
+        raise TypeError(f"name must be the parameter's keyword name, got {name!r}")
+    fps = _fps(fps)
+    values = [float(v) for v in values]
+    if not values:
+        raise ValueError("values must hold at least one parameter value")
+    fixed = dict(fixed or {})
+    unit_s = f" {unit}" if unit else ""
+    designs: list = []
+    qs: list = []
+    messages: list = []
+    for v in values:
+        head = f"{name} = {v:.4g}{unit_s}: "
+        try:
+            d = factory(**{**fixed, name: v})
+            _check_design(d)
+            qq = default_q(d) if q is None else np.asarray(q, dtype=float).reshape(-1)
+            d.poses(qq)
+        except (ValueError, ArithmeticError, RuntimeError) as exc:
+            designs.append(None)
+            qs.append(None)
+            messages.append(head + str(exc))
+            continue
+        designs.append(d)
+        qs.append(qq)
+        messages.append("")
+    valid = [i for i, d in enumerate(designs) if d is not None]
+    if not valid:
+        raise ValueError(f"no value of {name} gives a valid design; first error: {messages[0]}")
+    first = designs[valid[0]]
+    dofs = {designs[i].dof for i in valid}
+    show_energy = len(dofs) == 1 and first.dof <= 2
+    fig, axes = _figure(figsize, dpi, 2 if show_energy else 1)
+    ax = axes[0]
+    drawing = Drawing(first, qs[valid[0]], ax, labels=labels, limits=False)
+    boxes = np.array([_extent(designs[i], _Geometry(designs[i]))[0] for i in valid])
+    box = np.array([boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max()])
+    pad = 0.05 * max(box[1] - box[0], box[3] - box[2]) + max(drawing._load_len or [0.0])
+    ax.set_xlim(box[0] - pad, box[1] + pad)
+    ax.set_ylim(box[2] - pad, box[3] + pad)
+    ax.set_aspect("equal", adjustable="box")
+    title = ax.set_title("", fontsize=9, y=1.0)
+    wrapped = [_wrap(m) for m in messages]
+    note = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center", fontsize=8,
+                   color="#D55E00", wrap=True,
+                   bbox=dict(boxstyle="round", facecolor="white", edgecolor="#D55E00"))
+    energy = None
+    if show_energy:
+        energy = EnergyView(first, axes[1], q=qs[valid[0]], title=False)
+        energy.ax.set_title(" ", fontsize=9, y=1.0)
+        if first.dof == 1:
+            lows, highs = [], []
+            for i in valid:
+                e = energy.update(designs[i])
+                vals = np.concatenate([v[np.isfinite(v)] for v in (e.load, e.spring, e.total)])
+                lows.append(vals.min())
+                highs.append(vals.max())
+            scale = max((d.balance_report(n=200).scale for d in designs if d is not None), default=0.0)
+            energy.ylim = energy_limits(min(lows + [0.0]), max(highs + [0.0]), scale)
+            energy.update(first)
+    state = {"design": first}
+
+    def frame(i):
+        d = designs[i]
+        if d is None:
+            drawing.set_visible(False)
+            note.set_text(wrapped[i])
+            note.set_visible(True)
+            title.set_text(f"{name} = {values[i]:.4g}{unit_s}: no valid design")
+            if energy is not None:
+                energy.set_visible(False)
+                energy.ax.set_title("", fontsize=9, y=1.0)
+            return []
+        note.set_visible(False)
+        drawing.update(qs[i], d, rescale=False)
+        drawing.set_visible(True)
+        title.set_text(f"{d.name}, {name} = {values[i]:.4g}{unit_s}")
+        if energy is not None:
+            if d is not state["design"]:
+                energy.update(d)
+            energy.set_q(qs[i])
+            energy.set_visible(True)
+            energy.ax.set_title(_verdict(energy), fontsize=9, y=1.0)
+        state["design"] = d
+        return []
+
+    frame(0)
+    _freeze_layout(fig)
+    anim = _animation_class()(fig, frame, frames=len(values), interval=1000.0 / fps, blit=False,
+                              repeat=True, cache_frame_data=False)
+    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
+    # and do not warn when such an animation is dropped without being rendered
+    fig.canvas.mpl_disconnect(anim._first_draw_id)
+    anim._draw_was_started = True
+    anim._frames_list = list(range(len(values)))
+    if show_energy and first.dof == 1:
+        anim.dynamic = lambda: (drawing.artists + [note, title] + energy.artists
+                                + [energy.ax.title])
+    anim.values = values
+    anim.designs = designs
+    anim.messages = messages
+    anim.drawing = drawing
+    anim.energy = energy
+    anim.fps = fps
+    return anim
+
+
+def _wrap(text: str, width: int = 36) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width)[:8])
