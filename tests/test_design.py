@@ -23,7 +23,7 @@ def test_poses_vectorized_over_any_leading_shape():
 
 
 def test_one_dof_accepts_plain_angles():
-    d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     assert d.poses(np.linspace(0, 1, 7)).shape == (7, 2, 3)
     assert d.poses(0.3).shape == (2, 3)
     assert d.potential_energy(np.zeros((2, 5, 1))).total.shape == (2, 5)
@@ -136,7 +136,7 @@ def test_design_validation_names_the_bad_body():
 def test_symbolic_energy_of_the_lever_is_the_papers_eq1():
     import sympy as sp
 
-    d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     W, l, ax, by, k = sp.symbols("W l a_x b_y k", positive=True)
     th = sp.Symbol("theta", real=True)
     eq1 = k / 2 * (ax ** 2 + by ** 2) + (W * l - k * ax * by) * sp.sin(th)
@@ -174,3 +174,89 @@ def test_four_bar_with_two_circuits_picks_the_one_asked_for():
             assert min(abs(D - 0.3), abs(D - 0.7)) < 1e-9
     with pytest.raises(ValueError, match="cannot assemble at the crank angle"):
         FourBarKinematics(*args, circuit=0.0)
+
+
+# ---------------------------------------------------------------- 0.2 core contracts
+def test_a_design_is_immutable_and_changed_with_replace():
+    d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    for field, value in (("springs", ()), ("loads", ()), ("name", "x"), ("kinematics", None)):
+        with pytest.raises(AttributeError, match=r"immutable: use design.replace\(" + field):
+            setattr(d, field, value)
+    with pytest.raises(TypeError):
+        d.parameters["k"] = 1.0
+    with pytest.raises(TypeError):
+        d.labels["A"] = (0, (1.0, 1.0))
+    assert d.balance_report().balanced  # nothing above changed it
+    heavier = d.replace(loads=[bl.gravity_load(1, (0.5, 0.0), 2.2)])
+    assert not heavier.balance_report().balanced and d.balance_report().balanced
+    with pytest.raises(TypeError, match="unknown fields"):
+        d.replace(prismatic=[])
+
+
+def test_joints_that_disagree_with_the_kinematics_are_refused():
+    kin = bl.serial_2r_kinematics(1.0)
+    good = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (1.0, 0.0), 2, (0.0, 0.0))]
+    bl.Design("2R", ("ground", "a", "b"), good, kin, [bl.gravity_load(2, (0.5, 0.0), 1.0)])
+    gap = [good[0], Joint(1, (1.2, 0.0), 2, (0.0, 0.0))]  # a 0.2 m joint gap
+    with pytest.raises(ValueError, match=r"joint 1 .* opens by 0.2 m"):
+        bl.Design("2R", ("ground", "a", "b"), gap, kin, [bl.gravity_load(2, (0.5, 0.0), 1.0)])
+    with pytest.raises(TypeError, match="must be a balancelab Kinematics"):
+        bl.Design("2R", ("ground", "a", "b"), good, object())
+
+
+@pytest.mark.parametrize("end", [0, 1])
+def test_generalized_force_at_the_range_limits_is_the_one_sided_derivative(end):
+    """At an end of the range only one side is reachable: the derivative must not be halved."""
+    d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).replace(
+        loads=[bl.gravity_load(1, (0.5, 0.0), 2.5)],
+        kinematics=bl.lever_kinematics(q_range=(-1.0, 1.0)))
+    q = d.q_range[0, end]
+    h = 1e-6
+    inside = q + h if end == 0 else q - h
+    one_sided = (d.potential_energy(inside).total - d.potential_energy(q).total) / (inside - q)
+    # the analytic torque: spring + weight, dV/dtheta
+    k, b, c = d.parameters["k"], 0.3, 0.2
+    exact = k * b * c * -np.cos(q) + 2.5 * bl.G * 0.5 * np.cos(q)
+    assert d.generalized_force(q)[0] == pytest.approx(exact, rel=1e-5)
+    assert one_sided == pytest.approx(exact, rel=1e-4)
+    assert not d.reachable(q - h if end == 0 else q + h)
+
+
+def test_every_mechanism_implements_the_kinematics_contract():
+    import inspect
+
+    from balancelab.core import Kinematics
+
+    kinematics = [bl.lever_kinematics(), bl.serial_2r_kinematics(1.0), bl.scissors_kinematics(0.5),
+                  bl.FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6),
+                  bl.PeaucellierKinematics(0.22326, 0.7505, 0.363)]
+    for kin in kinematics:
+        assert isinstance(kin, Kinematics)
+        q = np.linspace(*kin.q_range[0], 11)[1:-1, None]
+        if kin.dof == 2:
+            q = np.hstack([q, q[::-1]])
+        poses, ok = kin.poses(q)
+        assert poses.shape == (len(q), kin.nbodies, 3) and ok.all()
+        assert np.array_equal(kin.reachable(q), ok)
+    assert inspect.isabstract(Kinematics)
+    with pytest.raises(TypeError):
+        Kinematics()
+
+
+def test_kinematics_joint_error_is_honest_where_the_loop_does_not_close():
+    kin = bl.FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6)
+    joints = bl.fourbar_joints(kin)
+    lo, hi = kin.q_range[0]
+    err = kin.joint_error(np.array([[0.5 * (lo + hi)], [hi + 1.0]]), joints)
+    assert err[0] < 1e-12 and np.isinf(err[1])
+
+
+def test_validation_of_sequences_names_the_item():
+    from balancelab.core.validation import finite_reals, planar_points
+
+    with pytest.raises(ValueError, match=r"masses\[1\] \(kg\) must be > 0"):
+        finite_reals("masses (kg)", (1.0, -2.0), 2, positive=True)
+    with pytest.raises(ValueError, match="must be 3 numbers, got 2"):
+        finite_reals("a_x (m)", (1.0, 2.0), 3)
+    with pytest.raises(TypeError, match="must be 2 points"):
+        planar_points("coms (m)", 5.0, 2)

@@ -6,84 +6,29 @@ linear springs. It knows its configuration space through a
 :class:`~balancelab.core.Kinematics` object and can prove itself balanced: its
 potential energy is evaluated over many configurations (:meth:`Design.balance_report`)
 and derived symbolically (:meth:`Design.potential_energy_symbolic`,
-:meth:`Design.balance_conditions`).
+:meth:`Design.balance_conditions`). A design is a value: its fields are read-only, and
+:meth:`Design.replace` returns a changed copy, checked again from scratch.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Mapping, NamedTuple, Sequence
+from types import MappingProxyType
+from typing import Mapping, Sequence
 
 import numpy as np
 
-from types import MappingProxyType
-
+from . import report as _report, symbolic as _symbolic
 from .elements import Joint, Load, Spring, SymbolicParts
-from .kinematics import Kinematics, body_to_world, joint_gaps
-from . import symbolic as _symbolic
+from .kinematics import Kinematics, body_to_world, joint_gaps, spread
+from .report import BALANCE_TOLERANCE, BalanceReport, Energy
 from .validation import positive_int
 
 __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BALANCE_TOLERANCE"]
-
-#: Relative tolerance below which a design is reported balanced: the spread of its total
-#: potential energy over the sampled configurations, divided by the energy scale.
-BALANCE_TOLERANCE: float = 1e-9
 
 _CHUNK = 16384  # configurations evaluated at once by potential_energy
 
 
 class UnreachableConfiguration(ValueError):
     """Raised when a configuration is outside what the linkage can reach."""
-
-
-class Energy(NamedTuple):
-    """Potential energy (J): ``total = load + spring``, each of the shape of the configurations."""
-
-    total: np.ndarray
-    load: np.ndarray
-    spring: np.ndarray
-
-
-@dataclass(frozen=True)
-class BalanceReport:
-    """How well a design is balanced over a set of configurations.
-
-    Attributes
-    ----------
-    variation : float
-        ``(max V - min V) / scale`` over the configurations: 0 for a perfect balance.
-    residual : float
-        Largest generalized force ``|dV/dq|`` (J/rad) divided by ``scale`` (1/rad).
-    scale : float
-        Energy scale (J): the sum over every load and spring of the spread of its own
-        energy over the configurations. It does not depend on where the origin is.
-    energy : float
-        Mean total potential energy (J).
-    worst_q : numpy.ndarray
-        Configuration with the largest residual generalized force.
-    balanced : bool
-        ``variation <= tolerance``.
-    tolerance : float
-        The tolerance used (default :data:`BALANCE_TOLERANCE`).
-    n : int
-        Number of configurations examined.
-    """
-
-    variation: float
-    residual: float
-    scale: float
-    energy: float
-    worst_q: np.ndarray
-    balanced: bool
-    tolerance: float
-    n: int
-
-    def __str__(self) -> str:
-        verdict = "balanced" if self.balanced else "NOT balanced"
-        q = ", ".join(f"{np.degrees(v):.1f}°" for v in np.atleast_1d(self.worst_q))
-        return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
-                f"({self.scale:.4g} J) over {self.n} configurations; "
-                f"largest residual dV/dq = {self.residual:.2e} × scale per rad at q = ({q}); "
-                f"mean energy {self.energy:.6g} J")
 
 
 _FIELDS = ("name", "bodies", "joints", "kinematics", "loads", "springs", "symbolic", "labels",
@@ -108,18 +53,6 @@ def _check_items(loads, springs, joints, nb: int) -> None:
         for b in (j.body_i, j.body_j):
             if not 0 <= b < nb:
                 raise ValueError(f"joint {j} names body {b}; bodies are 0..{nb - 1}")
-
-
-def _spread(q_range: np.ndarray, n: int) -> np.ndarray:
-    """``n`` configurations spread over ``q_range``: a fixed low-discrepancy set (Roberts' R_d)."""
-    dof = q_range.shape[0]
-    phi = 2.0
-    for _ in range(30):  # phi^(dof+1) = phi + 1
-        phi = (1 + phi) ** (1 / (dof + 1))
-    alpha = phi ** -np.arange(1, dof + 1)
-    u = (0.5 + np.arange(1, n + 1)[:, None] * alpha) % 1.0
-    lo, hi = q_range[:, 0], q_range[:, 1]
-    return lo + (hi - lo) * (0.02 + 0.96 * u)
 
 
 class Design:
@@ -153,7 +86,7 @@ class Design:
     Examples
     --------
     >>> import balancelab as bl
-    >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     >>> d.balance_report().balanced
     True
     >>> round(d.parameters["k"], 4)
@@ -200,11 +133,9 @@ class Design:
         """The kinematics must close every declared joint (gap <= JOINT_TOLERANCE)."""
         if not self.joints:
             return
-        q = _spread(self.q_range, 24)
-        poses, ok = self.kinematics.poses(q)
-        if not ok.any():
-            return
-        gaps = joint_gaps(poses[ok], self.joints)
+        poses, ok = self.kinematics.poses(spread(self.q_range, 24))
+        poses = poses[ok] if ok.any() else self.kinematics.poses(self.sample(24))[0]
+        gaps = joint_gaps(poses, self.joints)
         worst = gaps.max(axis=0)
         j = int(np.argmax(worst))
         if worst[j] > self.JOINT_TOLERANCE:
@@ -247,7 +178,7 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
         >>> heavier = d.replace(loads=[bl.Load(1, (0.5, 0.0), (0.0, -11.0))])
         >>> heavier.balance_report().balanced
         False
@@ -278,7 +209,8 @@ class Design:
             object.__setattr__(self, key, value)
 
     # ------------------------------------------------------------- kinematics
-    def _as_q(self, q) -> np.ndarray:
+    def check_q(self, q) -> np.ndarray:
+        """``q`` as a float array of shape ``(..., dof)``, or a clear error (plain angles for one dof)."""
         if isinstance(q, (str, bytes)):
             raise TypeError("q must be numbers (radians), got a string")
         try:
@@ -313,7 +245,7 @@ class Design:
         >>> bl.singh.scissors_lift().reachable([0.5, 2.0]).tolist()
         [True, False]
         """
-        return self.kinematics.poses(self._as_q(q))[1]
+        return self.kinematics.poses(self.check_q(q))[1]
 
     def poses(self, q) -> np.ndarray:
         """Pose ``(x, y, angle)`` of every body, shape ``(..., len(bodies), 3)``.
@@ -337,7 +269,7 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
         >>> d.poses(0.0)[1].tolist()
         [0.0, 0.0, 0.0]
         """
@@ -345,7 +277,7 @@ class Design:
 
     def _checked_poses(self, q, trig: bool = False):
         """Poses (and the kinematics' cached cos/sin when ``trig``), or a clear error."""
-        qa = self._as_q(q)
+        qa = self.check_q(q)
         if trig:
             poses, ok, cache = self.kinematics.poses_with_trig(qa)
         else:
@@ -377,7 +309,7 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
         >>> d.world_points(0.0, [(1, (0.5, 0.0))]).round(3).tolist()
         [[0.5, 0.0]]
         """
@@ -482,6 +414,16 @@ class Design:
                 vs.append(0.5 * self._sk[i] * ext * ext)
         return vl, vs
 
+    def element_energies(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """Energy (J) of each load and of each spring: arrays of shape ``(m, n_loads)``, ``(m, n_springs)``.
+
+        ``q`` is flattened to ``m`` configurations of shape ``(m, dof)``.
+        """
+        q = self.check_q(q).reshape(-1, self.dof)
+        vl, vs = self._element_energies(self.poses(q))
+        return (np.stack(vl, -1) if vl else np.zeros((len(q), 0)),
+                np.stack(vs, -1) if vs else np.zeros((len(q), 0)))
+
     def potential_energy(self, q) -> Energy:
         """Potential energy (J) of the loads, of the springs and in total.
 
@@ -498,12 +440,12 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl, numpy as np
-        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
         >>> e = d.potential_energy(np.linspace(0, 3, 4))
         >>> bool(np.ptp(e.total) < 1e-12)
         True
         """
-        q = self._as_q(q)
+        q = self.check_q(q)
         lead = q.shape[:-1]
         flat = q.reshape(-1, self.dof)
         out = np.empty((3, len(flat)))
@@ -533,7 +475,7 @@ class Design:
         -------
         numpy.ndarray
         """
-        q = self._as_q(q)
+        q = self.check_q(q)
         out = np.empty(q.shape)
         for i in range(self.dof):
             e = np.zeros(self.dof)
@@ -579,28 +521,10 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> print(bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3).balance_report().balanced)
+        >>> print(bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3).balance_report().balanced)
         True
         """
-        q = self.sample(n, seed) if q is None else self._as_q(q).reshape(-1, self.dof)
-        poses = self.poses(q)
-        vl, vs = self._element_energies(poses)
-        vl = np.stack(vl, -1) if vl else np.zeros((len(q), 0))
-        vs = np.stack(vs, -1) if vs else np.zeros((len(q), 0))
-        total = vl.sum(-1) + vs.sum(-1)
-        scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0))) if len(q) else 0.0
-        if scale == 0.0:
-            scale = float(np.max(np.abs(total))) if total.size else 0.0
-        if scale == 0.0:
-            raise ValueError(f"{self.name}: nothing in this design stores energy as it moves, "
-                             "so there is nothing to balance")
-        variation = float(np.ptp(total)) / scale
-        gf = self.generalized_force(q)
-        mag = np.max(np.abs(gf), axis=-1)
-        worst = int(np.argmax(mag))
-        return BalanceReport(variation=variation, residual=float(mag[worst]) / scale, scale=scale,
-                             energy=float(np.mean(total)), worst_q=q[worst].copy(),
-                             balanced=bool(variation <= tolerance), tolerance=tolerance, n=len(q))
+        return _report.balance_report(self, q, n=n, seed=seed, tolerance=tolerance)
 
     # --------------------------------------------------------------- symbolic
     def potential_energy_symbolic(self, parametric: bool = True, split: bool = False):
@@ -621,7 +545,7 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
         >>> d.potential_energy_symbolic()
         W*l*sin(theta) + k*(a_x**2*cos(theta)**2 + (a_x*sin(theta) - b_y)**2)/2
         """
@@ -656,7 +580,7 @@ class Design:
         Examples
         --------
         >>> import balancelab as bl
-        >>> bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3).balance_conditions()
+        >>> bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3).balance_conditions()
         [Eq(W*l - a_x*b_y*k, 0)]
         """
         return _symbolic.balance_conditions(self, parametric)

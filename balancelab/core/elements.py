@@ -23,13 +23,13 @@ from typing import NamedTuple
 
 from .validation import body_index, finite_real, planar_point
 
-__all__ = ["G", "Attachment", "Joint", "Load", "Spring", "SymbolicParts", "gravity_load"]
+__all__ = ["G", "Attachment", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load"]
 
 #: Gravitational acceleration (m/s^2), acting along -y.
 G: float = 9.81
 
 
-_REALIZATIONS = ("coil", "pulley", "gas")
+_REALIZATIONS = ("coil", "gas", "pulley")
 
 
 class Attachment(NamedTuple):
@@ -130,6 +130,55 @@ def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "wei
 
 
 @dataclass(frozen=True)
+class Pulley:
+    """A spring realized as an ordinary spring pulling a string over a pulley.
+
+    The pulley's centre is the spring's ground attachment ``a`` (the virtual anchor of
+    the ideal ZFL spring). The real spring lies on the side ``spring_direction`` of the
+    pulley; the string tied to it comes in parallel to ``-spring_direction``, wraps round
+    the pulley counter-clockwise (``turn = 1``) or clockwise (``turn = -1``) and leaves
+    on the tangent towards the attachment ``b`` on the moving link. The exact string
+    model (:func:`balancelab.methods.realize.pulley_string`) and the drawing
+    (:func:`balancelab.viz.draw`) both read this object.
+
+    Parameters
+    ----------
+    radius : float
+        Pulley radius (m), >= 0; 0 is the ideal point anchor (an exact ZFL spring).
+    spring_direction : (float, float)
+        Direction (global frame, any non-zero length) from the pulley towards the real
+        spring; ``(0, 1)``: the spring hangs above the pulley.
+    turn : {1, -1}
+        Sense in which the string wraps round the pulley (1: counter-clockwise).
+
+    Examples
+    --------
+    >>> p = Pulley(0.01)
+    >>> p.radius, p.spring_direction, p.turn
+    (0.01, (0.0, 1.0), 1)
+    >>> Spring(100.0, 0.0, (0, (0.0, 0.3)), (1, (0.2, 0.0)), realization=p).pulley is p
+    True
+    """
+
+    radius: float = 0.0
+    spring_direction: tuple[float, float] = (0.0, 1.0)
+    turn: int = 1
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "radius", finite_real("pulley radius (m)", self.radius, nonnegative=True))
+        direction = planar_point("pulley spring_direction", self.spring_direction)
+        if direction == (0.0, 0.0):
+            raise ValueError("pulley spring_direction must be a non-zero vector (x, y), got (0.0, 0.0)")
+        object.__setattr__(self, "spring_direction", direction)
+        if isinstance(self.turn, bool) or self.turn not in (1, -1):
+            raise ValueError(f"pulley turn must be 1 (counter-clockwise) or -1 (clockwise), got {self.turn!r}")
+        object.__setattr__(self, "turn", int(self.turn))
+
+    def __str__(self) -> str:
+        return f"string over a pulley of radius {self.radius:.4g} m"
+
+
+@dataclass(frozen=True)
 class Spring:
     """A linear spring between two attachment points.
 
@@ -150,14 +199,19 @@ class Spring:
         The two attachments as ``(body, local point)``.
     name : str, optional
         Label (for instance ``"k1"``).
-    realization : {"coil", "pulley", "gas"}
-        How the spring is built; only changes how it is drawn.
+    realization : {"coil", "gas", "pulley"} or Pulley
+        How the spring is built: a coil spring, a gas spring, or an ordinary spring
+        pulling a string over a :class:`Pulley` centred at ``a`` (which must then be on
+        the ground). ``"pulley"`` is short for ``Pulley()`` (an ideal pulley of radius
+        0 with the spring above it). The design's energy is always that of the ideal
+        spring; the realization is what :mod:`balancelab.methods.realize` models
+        exactly and what the figures draw.
 
     Examples
     --------
     >>> s = Spring(100.0, 0.0, (0, (0.0, 0.2)), (1, (0.1, 0.0)))
-    >>> s.is_zfl
-    True
+    >>> s.is_zfl, s.pulley
+    (True, None)
     """
 
     k: float
@@ -165,23 +219,34 @@ class Spring:
     a: Attachment
     b: Attachment
     name: str = ""
-    realization: str = "coil"
+    realization: str | Pulley = "coil"
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", finite_real("spring stiffness k (N/m)", self.k, positive=True))
         object.__setattr__(self, "free_length", finite_real("spring free_length (m)", self.free_length))
         object.__setattr__(self, "a", _attachment("spring attachment a", self.a))
         object.__setattr__(self, "b", _attachment("spring attachment b", self.b))
-        if self.realization not in _REALIZATIONS:
-            raise ValueError(f"spring realization must be one of {_REALIZATIONS}, got {self.realization!r}")
+        if not isinstance(self.realization, Pulley) and self.realization not in _REALIZATIONS:
+            raise ValueError(f"spring realization must be one of {_REALIZATIONS} or a Pulley, "
+                             f"got {self.realization!r}")
         if self.a.body == self.b.body:
             raise ValueError("a spring must join two different bodies; both attachments are on body "
                              f"{self.a.body}")
+        if self.pulley is not None and self.a.body != 0:
+            raise ValueError("a spring realized by a pulley has the pulley's centre at its attachment a, "
+                             f"which must be on the ground (body 0), got body {self.a.body}")
 
     @property
     def is_zfl(self) -> bool:
         """True for a zero-free-length spring."""
         return self.free_length == 0.0
+
+    @property
+    def pulley(self) -> Pulley | None:
+        """The :class:`Pulley` of a spring realized by a string over a pulley, else None."""
+        if isinstance(self.realization, Pulley):
+            return self.realization
+        return Pulley() if self.realization == "pulley" else None
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ from typing import Sequence
 
 import numpy as np
 
-__all__ = ["Kinematics", "body_to_world", "joint_gaps"]
+__all__ = ["Kinematics", "body_to_world", "joint_gaps", "spread"]
 
 
 def body_to_world(poses: np.ndarray, bodies, points) -> tuple[np.ndarray, np.ndarray]:
@@ -92,6 +92,27 @@ def joint_gaps(poses: np.ndarray, joints: Sequence) -> np.ndarray:
     xi, yi = body_to_world(poses, [j[0] for j in joints], [j[1] for j in joints])
     xj, yj = body_to_world(poses, [j[2] for j in joints], [j[3] for j in joints])
     return np.hypot(xi - xj, yi - yj)
+
+
+def spread(q_range: np.ndarray, n: int) -> np.ndarray:
+    """``n`` configurations spread over ``q_range``: a fixed low-discrepancy set (Roberts' R_d).
+
+    Deterministic (no seed), so a check made with it gives the same verdict every time.
+
+    Examples
+    --------
+    >>> q = spread(np.array([[0.0, 1.0], [-1.0, 1.0]]), 5)
+    >>> q.shape, bool((q[:, 0] > 0).all() and (q[:, 0] < 1).all())
+    ((5, 2), True)
+    """
+    dof = q_range.shape[0]
+    phi = 2.0
+    for _ in range(30):  # phi^(dof+1) = phi + 1
+        phi = (1 + phi) ** (1 / (dof + 1))
+    alpha = phi ** -np.arange(1, dof + 1)
+    u = (0.5 + np.arange(1, n + 1)[:, None] * alpha) % 1.0
+    lo, hi = q_range[:, 0], q_range[:, 1]
+    return lo + (hi - lo) * (0.02 + 0.96 * u)
 
 
 class Kinematics(ABC):

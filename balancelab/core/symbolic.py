@@ -43,7 +43,7 @@ def potential_energy_symbolic(design, parametric: bool = True, split: bool = Fal
     Examples
     --------
     >>> import balancelab as bl
-    >>> d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     >>> d.potential_energy_symbolic()
     W*l*sin(theta) + k*(a_x**2*cos(theta)**2 + (a_x*sin(theta) - b_y)**2)/2
     """
@@ -152,7 +152,7 @@ def balance_conditions(design, parametric: bool = True) -> list:
     Examples
     --------
     >>> import balancelab as bl
-    >>> bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3).balance_conditions()
+    >>> bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3).balance_conditions()
     [Eq(W*l - a_x*b_y*k, 0)]
     """
     import sympy as sp

@@ -11,7 +11,7 @@ from numbers import Real
 
 import numpy as np
 
-__all__ = ["finite_real", "planar_point", "body_index", "positive_int"]
+__all__ = ["finite_real", "planar_point", "body_index", "positive_int", "finite_reals", "planar_points"]
 
 
 def finite_real(name: str, value, *, positive: bool = False, nonnegative: bool = False) -> float:
@@ -62,3 +62,47 @@ def positive_int(name: str, value, minimum: int = 1) -> int:
     if value < minimum:
         raise ValueError(f"{name} must be an integer >= {minimum}, got {value}")
     return int(value)
+
+
+def _nth(name: str, i: int) -> str:
+    """``"masses (kg)"``, 0 -> ``"masses[0] (kg)"``."""
+    base, sep, rest = name.partition(" (")
+    return f"{base}[{i}]{sep}{rest}"
+
+
+def _items(name: str, value, n: int, what: str) -> list:
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be {n} {what}, got {value!r}")
+    try:
+        items = list(value)
+    except TypeError:
+        raise TypeError(f"{name} must be {n} {what}, got {value!r}") from None
+    if len(items) != n:
+        raise ValueError(f"{name} must be {n} {what}, got {len(items)}")
+    return items
+
+
+def finite_reals(name: str, value, n: int, *, positive: bool = False,
+                 nonnegative: bool = False) -> tuple[float, ...]:
+    """Return ``value`` as a tuple of ``n`` floats (one per body or spring), each checked.
+
+    Examples
+    --------
+    >>> finite_reals("masses (kg)", [1, 2.5], 2, positive=True)
+    (1.0, 2.5)
+    """
+    items = _items(name, value, n, "numbers")
+    return tuple(finite_real(_nth(name, i), v, positive=positive, nonnegative=nonnegative)
+                 for i, v in enumerate(items))
+
+
+def planar_points(name: str, value, n: int) -> tuple[tuple[float, float], ...]:
+    """Return ``value`` as a tuple of ``n`` points ``(x, y)``, each checked.
+
+    Examples
+    --------
+    >>> planar_points("coms (m)", [(0.2, 0), (0.5, 0.1)], 2)
+    ((0.2, 0.0), (0.5, 0.1))
+    """
+    items = _items(name, value, n, "points (x, y)")
+    return tuple(planar_point(_nth(name, i), v) for i, v in enumerate(items))
