@@ -18,7 +18,7 @@ def run() -> list[tuple[str, float, str, str]]:
     best = best_time(lambda: arm.potential_energy(q))
     rows.append(("2R potential_energy, 1e6 configurations", len(q) / best / 1e6, "M conf/s", ">= 10"))
     for name, fn in [
-        ("lacoste_lever synthesis", lambda: bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)),
+        ("lacoste_lever synthesis", lambda: bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)),
         ("min_preload_lever synthesis", lambda: bl.singh.min_preload_lever(10.0, 0.5, 0.5)),
         ("serial_2r_min_preload synthesis", bl.singh.serial_2r_min_preload),
         ("serial_2r_simplified synthesis", bl.singh.serial_2r_simplified),

@@ -15,14 +15,14 @@ BALANCED_FACTORIES = [
     lambda: bl.lecture.single_link_counterweight(2.0, 0.5, 4.0, link_mass=0.5),
     lambda: bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2),
     lambda: bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2, arrangement="below"),
-    lambda: bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3),
+    lambda: bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3),
     lambda: bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3),
     lambda: bl.singh.min_preload_lever(10.0, 0.5, 0.5, 0.1),
     bl.lecture.fourbar_counterweights, bl.lecture.fourbar_two_springs, bl.singh.singh_fourbar,
     bl.lecture.serial_2r_parallelogram, bl.lecture.serial_2r_base_springs, bl.singh.serial_2r_simplified,
     bl.singh.serial_2r_min_preload, bl.singh.serial_2r_two_springs,
-    lambda: bl.singh.serial_2r_min_preload(p1=(1.0, -0.5)),
-    bl.singh.scissors_lift, lambda: bl.singh.scissors_lift(l10=0.3, payload=0.0), bl.singh.peaucellier_board,
+    lambda: bl.singh.serial_2r_min_preload(coms=((1.0, -0.5), (2.0, 0.0))),
+    bl.singh.scissors_lift, lambda: bl.singh.scissors_lift(free_length=0.3, payload_mass=0.0), bl.singh.peaucellier_board,
 ]
 
 
@@ -87,7 +87,7 @@ def test_free_choices_table_2():
 
 
 def test_lever_eqs_2_3_9():
-    d = bl.singh.lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     assert d.parameters["k"] == pytest.approx(10 * 0.5 / (0.2 * 0.3))
     assert d.balance_report().energy == pytest.approx(d.parameters["PE"], rel=1e-12)
     m = bl.singh.min_preload_lever(10.0, 0.5, 0.3, -0.2)
@@ -95,7 +95,7 @@ def test_lever_eqs_2_3_9():
 
 
 def test_lecture_single_link_formula():
-    d = bl.lecture.single_link_spring(mass=2.0, r=0.5, b=0.3, c=0.2)
+    d = bl.lecture.single_link_spring(mass=2.0, length=0.5, b=0.3, c=0.2)
     assert d.parameters["k"] == pytest.approx(2.0 * 9.81 * 0.5 / (0.3 * 0.2))
 
 
@@ -117,7 +117,7 @@ def test_scissors_conditions_eqs_54_to_56():
 
 
 def test_scissors_min_preload_is_least_energy():
-    energies = {l10: bl.singh.scissors_lift(l10=l10).balance_report().energy for l10 in (0.3, 0.5, 0.8)}
+    energies = {l10: bl.singh.scissors_lift(free_length=l10).balance_report().energy for l10 in (0.3, 0.5, 0.8)}
     assert energies[0.5] < energies[0.3] and energies[0.5] < energies[0.8]
 
 
@@ -129,7 +129,7 @@ def test_scissors_spring_2_must_be_zfl():
 
 
 def test_min_preload_energy_equals_max_external_work():
-    cases = [(bl.singh.serial_2r_min_preload(), None), (bl.singh.serial_2r_min_preload(p1=(1.0, -0.5)), None),
+    cases = [(bl.singh.serial_2r_min_preload(), None), (bl.singh.serial_2r_min_preload(coms=((1.0, -0.5), (2.0, 0.0))), None),
              (bl.singh.min_preload_lever(3, 2, 1), [math.pi / 2])]
     for d, q_star in cases:
         q_star = q_star or [d.parameters["theta_star"], math.pi / 2]
@@ -141,9 +141,9 @@ def test_min_preload_energy_equals_max_external_work():
 
 
 def test_eq35_uses_atan2():
-    th = bl.singh.max_work_angle(10, 20, (1.0, -0.5), 1.5)
+    th = bl.singh.max_work_angle((10, 20), ((1.0, -0.5), (2.0, 0.0)), 1.5)
     assert math.pi / 2 < th < math.pi  # a plain arctan would give a negative angle
-    d = bl.singh.serial_2r_min_preload(p1=(1.0, -0.5))
+    d = bl.singh.serial_2r_min_preload(coms=((1.0, -0.5), (2.0, 0.0)))
     q = np.array([[th, math.pi / 2]])
     assert d.potential_energy(q).spring[0] == pytest.approx(0.0, abs=1e-12)
 
@@ -167,7 +167,7 @@ def test_counterweights_keep_the_centre_of_mass_still():
 def test_equivalent_masses_reproduce_coupler_centre():
     # U3 = (1 - c) Z2 + c Z4 + c Z1 (lecture), with A the crank pivot and B the rocker pivot
     d = bl.lecture.fourbar_counterweights()
-    em = bl.lecture.equivalent_masses(0.8, 0.3, 0.6, 2.0, (0.4, 0.1))
+    em = bl.lecture.equivalent_masses(0.3, 0.8, 0.6, 2.0, (0.4, 0.1))
     q = d.sample(50)
     g3 = d.world_points(q, [(2, (0.4, 0.1))])[:, 0]
     on_crank, on_rocker = np.moveaxis(d.world_points(q, [(1, em["crank_point"]), (3, em["rocker_point"])]), 1, 0)
@@ -181,26 +181,30 @@ def test_equivalent_masses_reproduce_coupler_centre():
     (lambda: bl.singh.generalized_lever(10, 0.5, 0.0, 0.1, 0.3), "a_x must be non-zero"),
     (lambda: bl.singh.generalized_lever(10, 0.5, 0.2, 0.1, 0.0), "b_y must be non-zero"),
     (lambda: bl.singh.generalized_lever(10, 0.5, 0.2, 0.1, -0.3), "same sign"),
-    (lambda: bl.singh.lacoste_lever(weight=-1, l=0.5, a_x=0.2, b_y=0.3), "weight W"),
-    (lambda: bl.singh.lacoste_lever(weight=1, l=0.0, a_x=0.2, b_y=0.3), "l"),
+    (lambda: bl.singh.lacoste_lever(weight=-1, length=0.5, a_x=0.2, b_y=0.3), "weight W"),
+    (lambda: bl.singh.lacoste_lever(weight=1, length=0.0, a_x=0.2, b_y=0.3), "length"),
     (lambda: bl.lecture.single_link_spring(0.0, 0.5, 0.3, 0.2), "mass"),
     (lambda: bl.lecture.single_link_spring(1.0, 0.5, 0.3, 0.2, arrangement="side"), "arrangement"),
-    (lambda: bl.singh.serial_2r_simplified(b_y2=1.0, b_y3=1.0), "b_y2 == b_y3"),
-    (lambda: bl.singh.serial_2r_simplified(a_x2=0.0), "a_x2 == 0"),
+    (lambda: bl.singh.serial_2r_simplified(b_y=(1.0, 1.0, 1.0)), "b_y2 == b_y3"),
+    (lambda: bl.singh.serial_2r_simplified(a_x=(1.0, 0.0, -2.0)), "a_x2 == 0"),
+    (lambda: bl.singh.serial_2r_simplified(coms=((1.0, 0.2), (2.0, 0.0))), r"coms\[0\] must lie on body 1's axis"),
+    (lambda: bl.singh.serial_2r_min_preload(coms=((1.0, 0.2), (2.0, 0.1))), r"coms\[1\] must lie on body 2's axis"),
     (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0, 2.0)), "a_x2 == a_x3"),
     (lambda: bl.singh.serial_2r_min_preload(a_x=(0.0, 2.0, -2.0)), "non-zero"),
     (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0, 1.0)), "not positive"),
     (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 2.0)), "three numbers"),
-    (lambda: bl.singh.serial_2r_two_springs(p1=(1.0, 0.0)), "p_y1 must be non-zero"),
-    (lambda: bl.lecture.serial_2r_parallelogram(m1=-1.0), "m1"),
+    (lambda: bl.singh.serial_2r_two_springs(coms=((1.0, 0.0), (2.0, 0.0))), "p_y1 must be non-zero"),
+    (lambda: bl.lecture.serial_2r_parallelogram(masses=(-1.0, 1.0)), r"masses\[0\]"),
+    (lambda: bl.lecture.serial_2r_parallelogram(masses=(1.0,)), "masses .* must be 2 numbers"),
     (lambda: bl.singh.singh_fourbar(crank=1.5, coupler=0.1, rocker=0.1, ground=4.0), "cannot assemble"),
     (lambda: bl.lecture.fourbar_counterweights(B=(0.0, 0.0)), "coincide"),
     (lambda: bl.lecture.fourbar_counterweights(counter_masses=(0.0, 1.0)), "counter_masses"),
-    (lambda: bl.singh.scissors_lift(a=0.0), "arm length"),
-    (lambda: bl.singh.scissors_lift(l10=-0.1), "l10"),
-    (lambda: bl.singh.peaucellier_board(s=0.8), "shorter than the long arms"),
-    (lambda: bl.singh.peaucellier_board(d=0.1), "too short"),
-    (lambda: bl.singh.peaucellier_board(W=(1.0, 2.0)), "seven body weights"),
+    (lambda: bl.singh.scissors_lift(length=0.0), "length"),
+    (lambda: bl.singh.scissors_lift(free_length=-0.1), "free_length"),
+    (lambda: bl.singh.peaucellier_board(side=0.8), "shorter than the long arms"),
+    (lambda: bl.singh.peaucellier_board(crank=0.1), "too short"),
+    (lambda: bl.singh.peaucellier_board(arm_com=(0.2, 0.1)), "arm_com"),
+    (lambda: bl.singh.peaucellier_board(weights=(1.0, 2.0)), "seven body weights"),
     (lambda: bl.lecture.link_spring((0.0, 0.0), 0.2, 0.1), "first_moment is zero"),
     (lambda: bl.lecture.link_spring((1.0, 0.0), 0.2, 0.1, anchor_up=(2.0, 0.0)), "unit vector"),
 ])
@@ -237,7 +241,7 @@ def test_min_preload_lever_energy_is_wl(W, l, a_x, a_y):
        a1=lengths, a2=lengths, a3=lengths)
 def test_min_preload_2r_always_balanced(W1, W2, px1, py1, px2, l, a1, a2, a3):
     try:
-        d = bl.singh.serial_2r_min_preload(W1, W2, (px1, py1), px2, l, (a1, a2, -a3))
+        d = bl.singh.serial_2r_min_preload((W1, W2), ((px1, py1), (px2, 0.0)), l, (a1, a2, -a3))
     except ValueError as err:  # an infeasible free choice is reported, never returned
         assert "not positive" in str(err)
         return
@@ -260,7 +264,7 @@ def test_scissors_always_balanced(a, arm, slider, plat, payload, l10):
        cx=st.floats(-0.5, 1.0), cy=st.floats(-0.5, 0.5), branch=st.sampled_from([1, -1]))
 def test_gravity_fourbars_always_balanced(r2, r3, r4, g, cx, cy, branch):
     geom = dict(A=(0.0, 0.0), B=(g, 0.0), crank=r2, coupler=r3, rocker=r4, branch=branch,
-                p=((r2 / 2, 0.0), (cx * r3, cy * r3), (r4 / 2, 0.0)))
+                coms=((r2 / 2, 0.0), (cx * r3, cy * r3), (r4 / 2, 0.0)))
     try:
         designs = [bl.lecture.fourbar_counterweights(**geom), bl.lecture.fourbar_two_springs(**geom)]
     except ValueError as err:

@@ -30,23 +30,31 @@ class PeaucellierKinematics(Kinematics):
 
     Parameters
     ----------
-    d : float
-        Crank length = distance ``OA`` (m).
-    l : float
-        Long arms ``OD = OE`` (m).
-    s : float
-        Rhombus side (m), ``s < l``.
+    crank : float
+        Crank length ``d`` = distance ``OA`` (m), > 0.
+    arm : float
+        Length ``l`` of the long arms ``OD = OE`` (m), > 0.
+    side : float
+        Rhombus side ``s`` (m), ``0 < s < l``.
+
+    The paper's symbols are kept as attributes: ``d``, ``l``, ``s``.
+
+    Examples
+    --------
+    >>> kin = PeaucellierKinematics(0.22326, 0.7505, 0.363)
+    >>> round(kin.line_x, 4)
+    0.9663
     """
 
-    def __init__(self, d: float, l: float, s: float):
-        self.d = finite_real("d (crank length, m)", d, positive=True)
-        self.l = finite_real("l (long arm, m)", l, positive=True)
-        self.s = finite_real("s (rhombus side, m)", s, positive=True)
+    def __init__(self, crank: float, arm: float, side: float):
+        self.d = finite_real("crank (length d, m)", crank, positive=True)
+        self.l = finite_real("arm (long-arm length l, m)", arm, positive=True)
+        self.s = finite_real("side (rhombus side s, m)", side, positive=True)
         if self.s >= self.l:
-            raise ValueError(f"the rhombus side s = {s} m must be shorter than the long arms l = {l} m")
+            raise ValueError(f"the rhombus side = {side} m must be shorter than the long arms arm = {arm} m")
         if 2 * self.d <= self.l - self.s:
-            raise ValueError(f"the crank d = {d} m is too short: C must reach a distance l - s = "
-                             f"{self.l - self.s:.4g} m from O, so d > (l - s)/2")
+            raise ValueError(f"the crank = {crank} m is too short: C must reach a distance arm - side = "
+                             f"{self.l - self.s:.4g} m from O, so crank > (arm - side)/2")
         self.nbodies = 8
         self.names = ("phi",)
         self.symbol_bodies = (1, 2, 3, 6, 7)

@@ -18,13 +18,13 @@ __all__ = ["SCISSORS_BODIES", "scissors_kinematics", "scissors_joints"]
 SCISSORS_BODIES = ("ground", "arm 2", "arm 3", "slider 4", "arm 5", "arm 6", "slider 7", "platform 8")
 
 
-def scissors_kinematics(a: float) -> ExplicitKinematics:
+def scissors_kinematics(length: float) -> ExplicitKinematics:
     """Poses of the two-stage scissors for ``0 < theta < pi/2``.
 
     Parameters
     ----------
-    a : float
-        Arm length (m), > 0.
+    length : float
+        Arm length ``a`` (m), > 0 (a number, or a sympy symbol for the symbolic energy).
 
     Returns
     -------
@@ -35,6 +35,8 @@ def scissors_kinematics(a: float) -> ExplicitKinematics:
     >>> scissors_kinematics(0.5).nbodies
     8
     """
+    a = length
+
     def pose_fn(q, lib):
         th = q[0]
         c, s = lib.cos(th), lib.sin(th)
@@ -47,7 +49,9 @@ def scissors_kinematics(a: float) -> ExplicitKinematics:
     return ExplicitKinematics(8, ("theta",), ((0.0, math.pi / 2),), pose_fn, open_range=True)
 
 
-def scissors_joints(a):
+def scissors_joints(length: float) -> list:
+    """The revolute joints of the scissors with arms of ``length`` (m)."""
+    a = length
     h = a / 2
     return [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (h, 0.0), 2, (h, 0.0)),
             Joint(2, (0.0, 0.0), 3, (0.0, 0.0)), Joint(2, (a, 0.0), 4, (0.0, 0.0)),

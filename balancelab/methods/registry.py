@@ -130,7 +130,7 @@ def example(name: str, title: str, *, chapter: int, expected_balanced: bool = Tr
     --------
     >>> from balancelab.methods.registry import examples
     >>> examples()["lacoste_lever"].kwargs
-    {'weight': 10.0, 'l': 0.5, 'a_x': 0.2, 'b_y': 0.3}
+    {'weight': 10.0, 'length': 0.5, 'a_x': 0.2, 'b_y': 0.3}
     """
     where = _where(1)
 

@@ -13,7 +13,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import gravity_load
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, finite_reals, planar_point, planar_points
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints
 from .lever import link_spring
 
@@ -22,21 +22,21 @@ __all__ = ["equivalent_masses", "fourbar_counterweights", "fourbar_two_springs"]
 _BODIES = ("ground", "crank", "coupler", "rocker")
 
 
-def equivalent_masses(coupler: float, crank: float, rocker: float, m3: float, p3) -> dict:
+def equivalent_masses(crank: float, coupler: float, rocker: float, mass: float, com) -> dict:
     """Where the coupler's mass acts on the crank and on the rocker (lecture 35).
 
-    With ``c = (p3_x + i p3_y) / r3`` the coupler's centre of mass is
+    With ``mass = m3``, ``com = p3`` and ``c = (p3_x + i p3_y) / r3`` the coupler's centre of mass is
     ``U3 = (1 - c) Z2 + c Z4 + c Z1``: a mass ``m3`` at the local point ``(1 - c) r2`` of the
     crank, a mass ``m3`` at the local point ``c r4`` of the rocker, and a constant.
 
     Parameters
     ----------
-    coupler, crank, rocker : float
-        Link lengths r3, r2, r4 (m), > 0.
-    m3 : float
-        Coupler mass (kg), > 0.
-    p3 : (float, float)
-        Coupler centre of mass in its local frame (m).
+    crank, coupler, rocker : float
+        Link lengths r2, r3, r4 (m), > 0.
+    mass : float
+        Coupler mass m3 (kg), > 0.
+    com : (float, float)
+        Coupler centre of mass p3 in its local frame (m).
 
     Returns
     -------
@@ -45,15 +45,15 @@ def equivalent_masses(coupler: float, crank: float, rocker: float, m3: float, p3
 
     Examples
     --------
-    >>> em = equivalent_masses(0.8, 0.3, 0.6, 2.0, (0.4, 0.0))
+    >>> em = equivalent_masses(0.3, 0.8, 0.6, 2.0, (0.4, 0.0))
     >>> em["crank_point"], em["rocker_point"]
     ((0.15, 0.0), (0.3, 0.0))
     """
     r3 = finite_real("coupler length (m)", coupler, positive=True)
     r2 = finite_real("crank length (m)", crank, positive=True)
     r4 = finite_real("rocker length (m)", rocker, positive=True)
-    finite_real("m3 (kg)", m3, positive=True)
-    p3 = planar_point("p3 (coupler centre of mass, m)", p3)
+    finite_real("mass (coupler, kg)", mass, positive=True)
+    p3 = planar_point("com (coupler centre of mass, m)", com)
     c = complex(*p3) / r3
     on_crank = (1 - c) * r2
     on_rocker = c * r4
@@ -61,23 +61,23 @@ def equivalent_masses(coupler: float, crank: float, rocker: float, m3: float, p3
             "rocker_point": (on_rocker.real, on_rocker.imag)}
 
 
-def _gravity_fourbar(A, B, crank, coupler, rocker, m, p, branch):
+def _gravity_fourbar(A, B, crank, coupler, rocker, masses, coms, branch):
     kin = FourBarKinematics(A, B, crank, coupler, rocker, branch=branch, symbolic="loop")
-    m2, m3, m4 = (finite_real(f"m{i + 2} (kg)", v, positive=True) for i, v in enumerate(m))
-    p2, p3, p4 = (planar_point(f"p{i + 2} (centre of mass, m)", v) for i, v in enumerate(p))
-    em = equivalent_masses(coupler, crank, rocker, m3, p3)
+    m2, m3, m4 = finite_reals("masses (crank, coupler, rocker; kg)", masses, 3, positive=True)
+    p2, p3, p4 = planar_points("coms (crank, coupler, rocker; m)", coms, 3)
+    em = equivalent_masses(crank, coupler, rocker, m3, p3)
     M2 = m2 * np.array(p2) + m3 * np.array(em["crank_point"])
     M4 = m4 * np.array(p4) + m3 * np.array(em["rocker_point"])
     loads = [gravity_load(1, p2, m2, "m2"), gravity_load(2, p3, m3, "m3"), gravity_load(3, p4, m4, "m4")]
-    labels = {"O2": (0, tuple(kin.A)), "O4": (0, tuple(kin.B)), "A": (1, (kin.r2, 0.0)),
-              "B": (3, (kin.r4, 0.0)), "G3": (2, tuple(p3))}
+    labels = {"A": (0, tuple(kin.A)), "B": (0, tuple(kin.B)), "D": (1, (kin.r2, 0.0)),
+              "C": (3, (kin.r4, 0.0)), "G3": (2, tuple(p3))}
     return kin, loads, labels, em, M2, M4
 
 
 @example("fourbar_counterweights", "Four-bar with counterweights on links 2 and 4 (lecture 35)", chapter=5)
 def fourbar_counterweights(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupler: float = 0.8,
-                           rocker: float = 0.6, m=(1.0, 2.0, 1.5), p=((0.15, 0.0), (0.4, 0.1), (0.3, 0.0)),
-                           counter_masses=(3.0, 3.0), branch: int = 1) -> Design:
+                           rocker: float = 0.6, masses=(1.0, 2.0, 1.5),
+                           coms=((0.15, 0.0), (0.4, 0.1), (0.3, 0.0)), counter_masses=(3.0, 3.0), branch: int = 1) -> Design:
     """A four-bar whose total centre of mass is stationary: counterweights on crank and rocker.
 
     The coupler's mass is replaced by its equivalent masses on the crank and the rocker
@@ -91,9 +91,9 @@ def fourbar_counterweights(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupl
         Ground pivots of crank and rocker (m).
     crank, coupler, rocker : float
         Link lengths (m), > 0.
-    m : (float, float, float)
+    masses : (float, float, float)
         Masses of crank, coupler and rocker (kg), > 0.
-    p : three (float, float)
+    coms : three (float, float)
         Their centres of mass in the local frames (m).
     counter_masses : (float, float)
         Counterweight masses on crank and rocker (kg), > 0.
@@ -109,8 +109,8 @@ def fourbar_counterweights(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupl
     >>> fourbar_counterweights().balance_report().balanced
     True
     """
-    kin, loads, labels, em, M2, M4 = _gravity_fourbar(A, B, crank, coupler, rocker, m, p, branch)
-    mc2, mc4 = (finite_real(f"counter_masses[{i}] (kg)", v, positive=True) for i, v in enumerate(counter_masses))
+    kin, loads, labels, em, M2, M4 = _gravity_fourbar(A, B, crank, coupler, rocker, masses, coms, branch)
+    mc2, mc4 = finite_reals("counter_masses (kg)", counter_masses, 2, positive=True)
     cw2 = tuple(-M2 / mc2)
     cw4 = tuple(-M4 / mc4)
     loads += [gravity_load(1, cw2, mc2, "cw2", kind="counterweight"),
@@ -126,8 +126,8 @@ def fourbar_counterweights(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupl
 
 @example("fourbar_two_springs", "Four-bar with two ZFL springs on links 2 and 4 (lecture 35)", chapter=5)
 def fourbar_two_springs(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupler: float = 0.8,
-                        rocker: float = 0.6, m=(1.0, 2.0, 1.5), p=((0.15, 0.0), (0.4, 0.1), (0.3, 0.0)),
-                        b=(0.2, 0.2), c=(0.15, 0.3), branch: int = 1) -> Design:
+                        rocker: float = 0.6, masses=(1.0, 2.0, 1.5),
+                        coms=((0.15, 0.0), (0.4, 0.1), (0.3, 0.0)), b=(0.2, 0.2), c=(0.15, 0.3), branch: int = 1) -> Design:
     """The lecture's closing design: the four-bar balanced by two ZFL springs.
 
     The crank and the rocker, each carrying its own mass and the coupler's equivalent
@@ -138,7 +138,7 @@ def fourbar_two_springs(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupler:
 
     Parameters
     ----------
-    A, B, crank, coupler, rocker, m, p, branch : see :func:`fourbar_counterweights`.
+    A, B, crank, coupler, rocker, masses, coms, branch : see :func:`fourbar_counterweights`.
     b : (float, float)
         Anchor heights above the crank and rocker pivots (m), > 0.
     c : (float, float)
@@ -154,9 +154,11 @@ def fourbar_two_springs(A=(0.0, 0.0), B=(0.7, 0.0), crank: float = 0.3, coupler:
     >>> len(d.springs), d.balance_report().balanced
     (2, True)
     """
-    kin, loads, labels, em, M2, M4 = _gravity_fourbar(A, B, crank, coupler, rocker, m, p, branch)
-    s2 = link_spring(M2, b[0], c[0], body=1, pivot=tuple(kin.A), name="k2")
-    s4 = link_spring(M4, b[1], c[1], body=3, pivot=tuple(kin.B), name="k4")
+    kin, loads, labels, em, M2, M4 = _gravity_fourbar(A, B, crank, coupler, rocker, masses, coms, branch)
+    b = finite_reals("b (anchor heights, m)", b, 2, positive=True)
+    c = finite_reals("c (attachment distances, m)", c, 2, positive=True)
+    s2 = link_spring(M2, b[0], c[0], body=1, pivot_on_anchor=tuple(kin.A), name="k2")
+    s4 = link_spring(M4, b[1], c[1], body=3, pivot_on_anchor=tuple(kin.B), name="k4")
     return Design("four-bar with two ZFL springs (lecture)", _BODIES, fourbar_joints(kin), kin, loads,
                   [s2, s4], labels=labels, parameters={"k2": s2.k, "k4": s4.k},
                   reference="Lecture 35 (springs on links 2 and 4)")

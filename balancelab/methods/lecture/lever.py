@@ -18,8 +18,8 @@ __all__ = ["link_spring", "single_link_counterweight", "single_link_spring",
            "single_link_ordinary_spring"]
 
 
-def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 0.0),
-                anchor_body: int = 0, anchor_origin=(0.0, 0.0), anchor_up=(0.0, 1.0),
+def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot_on_anchor=(0.0, 0.0),
+                anchor_body: int = 0, pivot_on_link=(0.0, 0.0), anchor_up=(0.0, 1.0),
                 name: str = "k") -> Spring:
     """ZFL spring that balances the weight of masses carried by a link turning about a pivot.
 
@@ -39,12 +39,12 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 
         Distance of the attachment from the pivot along ``M`` (m), > 0.
     body : int
         The link.
-    pivot : (float, float)
-        Local point of ``anchor_body`` where the link is pivoted (m).
+    pivot_on_anchor : (float, float)
+        The pivot as a local point of ``anchor_body`` (m).
     anchor_body : int
         Body carrying the anchor (0: ground; a link that stays vertical also works).
-    anchor_origin : (float, float)
-        Local point of the link where the pivot is (m); usually the origin.
+    pivot_on_link : (float, float)
+        The pivot as a local point of the link (m); usually its origin.
     anchor_up : (float, float)
         The global upward direction in ``anchor_body``'s local frame (a unit vector; that
         body must never turn). ``(0, 1)`` for the ground; ``(1, 0)`` for a link kept
@@ -71,7 +71,8 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 
                          "need no spring")
     u = M / norm
     k = G * norm / (b * c)
-    ao = np.asarray(anchor_origin, dtype=float)
+    ao = np.asarray(planar_point("pivot_on_link", pivot_on_link))
+    pivot = planar_point("pivot_on_anchor", pivot_on_anchor)
     up = np.asarray(planar_point("anchor_up", anchor_up))
     if not np.isclose(np.hypot(*up), 1.0):
         raise ValueError(f"anchor_up must be a unit vector, got {tuple(up)}")
@@ -80,25 +81,25 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot=(0.0, 
 
 
 @example("single_link_counterweight", "Single link balanced by a counterweight (lecture 35 recap)",
-         chapter=1, mass=2.0, r=0.5, counter_mass=4.0, link_mass=0.5)
-def single_link_counterweight(mass: float, r: float, counter_mass: float, *,
+         chapter=1, mass=2.0, length=0.5, counter_mass=4.0, link_mass=0.5)
+def single_link_counterweight(mass: float, length: float, counter_mass: float, *,
                               link_mass: float = 0.0) -> Design:
-    """A link carrying ``mass`` at distance ``r``, balanced by a counterweight behind the pivot.
+    """A link carrying ``mass`` at its tip, a distance ``length`` from the pivot, balanced by a counterweight.
 
-    The counterweight sits at distance ``r_c = (mass r + link_mass r/2) / counter_mass``
-    on the far side of the pivot, so the centre of mass of the link stays on the pivot
+    With ``r = length``, the counterweight sits at distance
+    ``r_c = (mass r + link_mass r/2) / counter_mass`` on the far side of the pivot, so the centre of mass of the link stays on the pivot
     (lecture 35, recap of the previous lecture).
 
     Parameters
     ----------
     mass : float
         Mass at the end (kg), > 0.
-    r : float
-        Its distance from the pivot (m), > 0.
+    length : float
+        Length of the link: the distance of the mass from the pivot (m), > 0.
     counter_mass : float
         Counterweight mass (kg), > 0.
     link_mass : float
-        Mass of the uniform link itself (kg), >= 0, centred at ``r/2``.
+        Mass of the uniform link itself (kg), >= 0, centred at ``length/2``.
 
     Returns
     -------
@@ -111,7 +112,7 @@ def single_link_counterweight(mass: float, r: float, counter_mass: float, *,
     (0.25, True)
     """
     mass = finite_real("mass (kg)", mass, positive=True)
-    r = finite_real("r (m)", r, positive=True)
+    r = finite_real("length (m)", length, positive=True)
     counter_mass = finite_real("counter_mass (kg)", counter_mass, positive=True)
     link_mass = finite_real("link_mass (kg)", link_mass, nonnegative=True)
     rc = (mass * r + link_mass * r / 2) / counter_mass
@@ -126,19 +127,19 @@ def single_link_counterweight(mass: float, r: float, counter_mass: float, *,
 
 
 @example("single_link_zfl", "Single link with a ZFL spring, k = m g r/(b c) (lecture 35)",
-         chapter=2, mass=2.0, r=0.5, b=0.3, c=0.2)
+         chapter=2, mass=2.0, length=0.5, b=0.3, c=0.2)
 @example("single_link_zfl_below", "Single link with a ZFL spring below the pivot (lecture 35, second "
-         "arrangement)", chapter=2, mass=2.0, r=0.5, b=0.3, c=0.2, arrangement="below")
-def single_link_spring(mass: float, r: float, b: float, c: float, *,
+         "arrangement)", chapter=2, mass=2.0, length=0.5, b=0.3, c=0.2, arrangement="below")
+def single_link_spring(mass: float, length: float, b: float, c: float, *,
                        arrangement: str = "above") -> Design:
     """The lecture's single link balanced by a ZFL spring, ``k = m g r / (b c)``.
 
     Parameters
     ----------
     mass : float
-        Mass (kg) at distance ``r`` from the pivot A, > 0.
-    r : float
-        Distance of the mass from A (m), > 0.
+        Mass (kg) at the tip of the link, > 0.
+    length : float
+        Length of the link: the distance ``r`` of the mass from the pivot A (m), > 0.
     b : float
         Distance AB from the pivot to the fixed spring anchor B (m), > 0.
     c : float
@@ -159,7 +160,7 @@ def single_link_spring(mass: float, r: float, b: float, c: float, *,
     163.5
     """
     mass = finite_real("mass (kg)", mass, positive=True)
-    r = finite_real("r (m)", r, positive=True)
+    r = finite_real("length (m)", length, positive=True)
     b = finite_real("b (m)", b, positive=True)
     c = finite_real("c (m)", c, positive=True)
     if arrangement not in ("above", "below"):
@@ -190,8 +191,8 @@ def _single_link_symbolic(sign):
 
 
 @example("single_link_ordinary_spring", "The same link with an ordinary spring: not balanced (lecture 35)",
-         chapter=2, expected_balanced=False, mass=2.0, r=0.5, b=0.3, c=0.2, free_length=0.05)
-def single_link_ordinary_spring(mass: float, r: float, b: float, c: float,
+         chapter=2, expected_balanced=False, mass=2.0, length=0.5, b=0.3, c=0.2, free_length=0.05)
+def single_link_ordinary_spring(mass: float, length: float, b: float, c: float,
                                 free_length: float) -> Design:
     """The single link with an *ordinary* spring of the same stiffness: not balanced.
 
@@ -201,7 +202,7 @@ def single_link_ordinary_spring(mass: float, r: float, b: float, c: float,
 
     Parameters
     ----------
-    mass, r, b, c : float
+    mass, length, b, c : float
         As in :func:`single_link_spring`.
     free_length : float
         Free length ``a0`` of the spring (m), > 0.
@@ -216,7 +217,7 @@ def single_link_ordinary_spring(mass: float, r: float, b: float, c: float,
     False
     """
     free_length = finite_real("free_length (m)", free_length, positive=True)
-    d = single_link_spring(mass, r, b, c)
+    d = single_link_spring(mass, length, b, c)
     s = d.springs[0]
     spring = Spring(s.k, free_length, s.a, s.b, name="k")
     params = dict(d.parameters, free_length=free_length)

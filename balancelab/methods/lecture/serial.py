@@ -13,7 +13,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Joint, gravity_load
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, finite_reals, planar_points
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.chain import TWO_TURNS
 from .lever import link_spring
@@ -21,21 +21,21 @@ from .lever import link_spring
 __all__ = ["serial_2r_parallelogram", "serial_2r_base_springs"]
 
 
-def _masses(m1, m2, l1, p1, p2):
-    m1 = finite_real("m1 (kg)", m1, positive=True)
-    m2 = finite_real("m2 (kg)", m2, positive=True)
-    l1 = finite_real("l1 (m)", l1, positive=True)
-    p1 = np.asarray(planar_point("p1 (centre of mass of link 1, m)", p1))
-    p2 = np.asarray(planar_point("p2 (centre of mass of link 2, m)", p2))
+def _arm(masses, length, coms, b, c):
+    """Checked inputs of the lecture's 2R arms and the links' first moments about their joints."""
+    m1, m2 = finite_reals("masses (kg)", masses, 2, positive=True)
+    l1 = finite_real("length (of link 1, m)", length, positive=True)
+    p1, p2 = (np.asarray(p) for p in planar_points("coms (centres of mass of links 1 and 2, m)", coms, 2))
+    b = finite_reals("b (anchor heights, m)", b, 2, positive=True)
+    c = finite_reals("c (attachment distances, m)", c, 2, positive=True)
     M1 = m1 * p1 + m2 * np.array([l1, 0.0])   # first moment of link 1 with link 2's mass at the elbow
     M2 = m2 * p2
-    return m1, m2, l1, p1, p2, M1, M2
+    return (m1, m2), l1, (p1, p2), b, c, (M1, M2)
 
 
 @example("serial_2r_parallelogram", "2R arm with a parallelogram of auxiliary links (lecture 35)", chapter=4)
-def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
-                            p1=(0.25, 0.0), p2=(0.25, 0.0), b1: float = 0.2, c1: float = 0.2,
-                            b2: float = 0.2, c2: float = 0.2, h: float = 0.25) -> Design:
+def serial_2r_parallelogram(masses=(1.0, 1.0), length: float = 0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                            b=(0.2, 0.2), c=(0.2, 0.2), h: float = 0.25) -> Design:
     """The lecture's 2R arm: auxiliary parallelogram and one ZFL spring per link.
 
     An auxiliary link (body 3) pivoted a height ``h`` above the base, parallel to link 1,
@@ -49,15 +49,15 @@ def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
 
     Parameters
     ----------
-    m1, m2 : float
-        Masses of links 1 and 2 (kg), > 0.
-    l1 : float
-        Length of link 1 (m), > 0.
-    p1, p2 : (float, float)
-        Centres of mass in the links' local frames (m).
-    b1, c1, b2, c2 : float
-        Anchor heights above the joints and attachment distances along the first
-        moments (m), > 0.
+    masses : (float, float)
+        Masses ``m1``, ``m2`` of links 1 and 2 (kg), > 0.
+    length : float
+        Length ``l1`` of link 1 (m), > 0.
+    coms : two (float, float)
+        Centres of mass ``p1``, ``p2`` in the links' local frames (m).
+    b, c : (float, float)
+        Anchor heights ``b1``, ``b2`` above the joints and attachment distances ``c1``,
+        ``c2`` along the first moments (m), > 0.
     h : float
         Height of the parallelogram (m), > 0.
 
@@ -72,7 +72,7 @@ def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
     >>> round(d.parameters["k1"], 2), round(d.parameters["k2"], 2)
     (183.94, 61.31)
     """
-    m1, m2, l1, p1, p2, M1, M2 = _masses(m1, m2, l1, p1, p2)
+    (m1, m2), l1, (p1, p2), (b1, b2), (c1, c2), (M1, M2) = _arm(masses, length, coms, b, c)
     h = finite_real("h (m)", h, positive=True)
     joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (l1, 0.0), 2, (0.0, 0.0)),
               Joint(0, (0.0, h), 3, (0.0, 0.0)), Joint(1, (l1, 0.0), 4, (0.0, 0.0)),
@@ -91,9 +91,8 @@ def serial_2r_parallelogram(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
 
 
 @example("serial_2r_base_springs", "2R desk-lamp arm with both springs on the base (lecture 35)", chapter=4)
-def serial_2r_base_springs(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
-                           p1=(0.25, 0.0), p2=(0.25, 0.0), b1: float = 0.2, c1: float = 0.2,
-                           b2: float = 0.2, c2: float = 0.1, e: float = 0.1) -> Design:
+def serial_2r_base_springs(masses=(1.0, 1.0), length: float = 0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                           b=(0.2, 0.2), c=(0.2, 0.1), e: float = 0.1) -> Design:
     """The lecture's desk-lamp arm: both ZFL springs anchored on the base.
 
     A parallelogram (body 3 pivoted at the shoulder and parallel to link 2, body 4
@@ -105,7 +104,7 @@ def serial_2r_base_springs(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
 
     Parameters
     ----------
-    m1, m2, l1, p1, p2, b1, c1, b2, c2 : see :func:`serial_2r_parallelogram`.
+    masses, length, coms, b, c : see :func:`serial_2r_parallelogram`.
     e : float
         Side of the parallelogram along link 2 (m), > 0.
 
@@ -118,7 +117,7 @@ def serial_2r_base_springs(m1: float = 1.0, m2: float = 1.0, l1: float = 0.5,
     >>> serial_2r_base_springs().balance_report().balanced
     True
     """
-    m1, m2, l1, p1, p2, M1, M2 = _masses(m1, m2, l1, p1, p2)
+    (m1, m2), l1, (p1, p2), (b1, b2), (c1, c2), (M1, M2) = _arm(masses, length, coms, b, c)
     e = finite_real("e (m)", e, positive=True)
     joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (l1, 0.0), 2, (0.0, 0.0)),
               Joint(0, (0.0, 0.0), 3, (0.0, 0.0)), Joint(3, (-e, 0.0), 4, (0.0, 0.0)),

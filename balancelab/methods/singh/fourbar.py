@@ -11,7 +11,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring
-from ...core.validation import finite_real
+from ...core.validation import finite_real, finite_reals, planar_point, planar_points
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints
 from .lever import min_preload_lever
 from .serial import serial_2r_min_preload
@@ -23,7 +23,7 @@ _BODIES = ("ground", "crank", "coupler", "rocker")
 
 @example("singh_fourbar", "Four-bar with minimum preload (Singh Sec. III.A: k1 = 17.81, k4 = 20 N/m)",
          chapter=5)
-def singh_fourbar(W=(10.0, 20.0, 10.0), p1=(1.0, 0.5), p_x2: float = 2.0, p_x3: float = 0.5,
+def singh_fourbar(weights=(10.0, 20.0, 10.0), coms=((1.0, 0.5), (2.0, 0.0), (0.5, 0.0)),
                   crank: float = 1.5, coupler: float = 4.0, rocker: float = 1.0, ground: float = 4.0,
                   a_x=(1.0, 2.0, -2.0), a4=(0.5, 0.0), branch: int = 1) -> Design:
     """Singh & Ananthasuresh's four-bar balanced with minimum preload (Sec. III.A).
@@ -45,12 +45,11 @@ def singh_fourbar(W=(10.0, 20.0, 10.0), p1=(1.0, 0.5), p_x2: float = 2.0, p_x3: 
 
     Parameters
     ----------
-    W : (float, float, float)
-        Weights of crank, coupler and rocker (N).
-    p1 : (float, float)
-        Centre of mass of the crank (m).
-    p_x2, p_x3 : float
-        Centres of mass along coupler and rocker (m).
+    weights : (float, float, float)
+        Weights ``W1, W2, W3`` of crank, coupler and rocker (N), > 0.
+    coms : three (float, float)
+        Their centres of mass ``p1``, ``(p_x2, 0)``, ``(p_x3, 0)`` (m); coupler's and rocker's
+        on the links' axes.
     crank, coupler, rocker, ground : float
         Link lengths (m); the rocker is pivoted at ``(ground, 0)``.
     a_x : (float, float, float)
@@ -70,10 +69,15 @@ def singh_fourbar(W=(10.0, 20.0, 10.0), p1=(1.0, 0.5), p_x2: float = 2.0, p_x3: 
     (17.81, 20.0, True)
     """
     ground = finite_real("ground (m)", ground, positive=True)
-    W1, W2, W3 = (finite_real(f"W{i + 1} (N)", v, positive=True) for i, v in enumerate(W))
+    W1, W2, W3 = finite_reals("weights (N)", weights, 3, positive=True)
+    p1, p2, p3 = planar_points("coms (m)", coms, 3)
+    if p3[1] != 0:
+        raise ValueError(f"coms[2] must lie on the rocker's axis, (p_x3, 0), got {p3}")
+    p_x2, p_x3 = p2[0], p3[0]
     kin = FourBarKinematics((0.0, 0.0), (ground, 0.0), crank, coupler, rocker, branch=branch,
                             symbolic="relaxed")
-    arm = serial_2r_min_preload(W1, W2, p1, p_x2, crank, a_x)
+    arm = serial_2r_min_preload((W1, W2), (p1, p2), crank, a_x)
+    a4 = planar_point("a4 (m)", a4)
     lever = min_preload_lever(W3, p_x3, a4[0], a4[1])
     B = np.array([ground, 0.0])
     lever_spring = lever.springs[0]

@@ -13,8 +13,8 @@ __all__ = ["lacoste_lever", "generalized_lever", "min_preload_lever"]
 
 
 @example("lacoste_lever", "LaCoste's lever (Singh eqs 1-3)", chapter=2,
-         weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
-def lacoste_lever(weight: float, l: float, a_x: float, b_y: float) -> Design:
+         weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
+def lacoste_lever(weight: float, length: float, a_x: float, b_y: float) -> Design:
     """LaCoste's lever: a load ``W`` at ``(l, 0)`` balanced by one ZFL spring (Singh eqs 1-3).
 
     The spring runs from the fixed anchor ``b = (0, b_y)`` to ``a = (a_x, 0)`` on the
@@ -26,8 +26,8 @@ def lacoste_lever(weight: float, l: float, a_x: float, b_y: float) -> Design:
     ----------
     weight : float
         The load W (N), > 0, acting downwards.
-    l : float
-        Its distance from the pivot along the lever (m), > 0.
+    length : float
+        Length of the lever: the distance ``l`` of the load from the pivot (m), > 0.
     a_x : float
         Attachment on the lever (m), > 0.
     b_y : float
@@ -39,12 +39,12 @@ def lacoste_lever(weight: float, l: float, a_x: float, b_y: float) -> Design:
 
     Examples
     --------
-    >>> d = lacoste_lever(weight=10.0, l=0.5, a_x=0.2, b_y=0.3)
+    >>> d = lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
     >>> round(d.parameters["k"], 4), round(d.parameters["PE"], 4)
     (83.3333, 5.4167)
     """
     W = finite_real("weight W (N)", weight, positive=True)
-    l = finite_real("l (m)", l, positive=True)
+    l = finite_real("length (m)", length, positive=True)
     a_x = finite_real("a_x (m)", a_x, positive=True)
     b_y = finite_real("b_y (m)", b_y, positive=True)
     k = W * l / (a_x * b_y)
@@ -62,8 +62,8 @@ def lacoste_lever(weight: float, l: float, a_x: float, b_y: float) -> Design:
 
 
 @example("generalized_lever", "Generalized lever (Singh eqs 12-17)", chapter=2,
-         weight=10.0, l=0.5, a_x=0.2, b_x=0.1, b_y=0.3)
-def generalized_lever(weight: float, l: float, a_x: float, b_x: float, b_y: float) -> Design:
+         weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)
+def generalized_lever(weight: float, length: float, a_x: float, b_x: float, b_y: float) -> Design:
     """The generalized lever of Singh & Ananthasuresh (eqs 12-17).
 
     A load ``W`` at ``p = (l, 0)`` and one ZFL spring from ``b = (b_x, b_y)`` (ground) to
@@ -76,8 +76,8 @@ def generalized_lever(weight: float, l: float, a_x: float, b_x: float, b_y: floa
     ----------
     weight : float
         W (N), > 0.
-    l : float
-        Distance of the load from the pivot (m), > 0.
+    length : float
+        Length of the lever: the distance ``l`` of the load from the pivot (m), > 0.
     a_x, b_x, b_y : float
         Free choices (m). ``a_x`` and ``b_y`` must be non-zero and of the same sign
         (otherwise ``k`` would be negative).
@@ -93,7 +93,7 @@ def generalized_lever(weight: float, l: float, a_x: float, b_x: float, b_y: floa
     (-0.0667, 75.0)
     """
     W = finite_real("weight W (N)", weight, positive=True)
-    l = finite_real("l (m)", l, positive=True)
+    l = finite_real("length (m)", length, positive=True)
     a_x = finite_real("a_x (m)", a_x)
     b_x = finite_real("b_x (m)", b_x)
     b_y = finite_real("b_y (m)", b_y)
@@ -128,8 +128,8 @@ def _general_lever_design(name, W, l, a, b, k, reference) -> Design:
 
 
 @example("min_preload_lever", "Lever with minimum preload, Singh's rocker: k4 = 20 N/m (eqs 18-20)",
-         chapter=2, weight=10.0, l=0.5, a_x=0.5, a_y=0.0)
-def min_preload_lever(weight: float, l: float, a_x: float, a_y: float = 0.0) -> Design:
+         chapter=2, weight=10.0, length=0.5, a_x=0.5, a_y=0.0)
+def min_preload_lever(weight: float, length: float, a_x: float, a_y: float = 0.0) -> Design:
     """The lever balanced with the least spring preload (Singh eqs 18-20, ``PE_min = W l``).
 
     The spring's two ends coincide in the configuration of maximum external work
@@ -142,8 +142,8 @@ def min_preload_lever(weight: float, l: float, a_x: float, a_y: float = 0.0) -> 
     ----------
     weight : float
         W (N), > 0.
-    l : float
-        Distance of the load from the pivot (m), > 0.
+    length : float
+        Length of the lever: the distance ``l`` of the load from the pivot (m), > 0.
     a_x : float
         Attachment on the lever along it (m), > 0.
     a_y : float
@@ -160,7 +160,7 @@ def min_preload_lever(weight: float, l: float, a_x: float, a_y: float = 0.0) -> 
     (0.0, 0.5, 20.0, 5.0)
     """
     W = finite_real("weight W (N)", weight, positive=True)
-    l = finite_real("l (m)", l, positive=True)
+    l = finite_real("length (m)", length, positive=True)
     a_x = finite_real("a_x (m)", a_x, positive=True)
     a_y = finite_real("a_y (m)", a_y)
     b = (0.0 - a_y, a_x)

@@ -31,7 +31,7 @@ import math
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Joint, Load, Spring
-from ...core.validation import finite_real
+from ...core.validation import finite_real, finite_reals, planar_point
 from ...mechanisms.peaucellier import PEAUCELLIER_BODIES, PeaucellierKinematics
 
 __all__ = ["peaucellier_board"]
@@ -39,23 +39,24 @@ __all__ = ["peaucellier_board"]
 
 @example("peaucellier_board", "Peaucellier-Lipkin writing board (Singh Sec. III.B: k1 = 45.88, "
          "k2 = k3 = 33.02 N/m)", chapter=6)
-def peaucellier_board(W=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), Wb: float = 72.03,
-                      d: float = 0.22326, l: float = 0.7505, s: float = 0.363, p_arm: float = 0.232,
-                      a_x1: float = 0.2) -> Design:
+def peaucellier_board(weights=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), board_weight: float = 72.03,
+                      crank: float = 0.22326, arm: float = 0.7505, side: float = 0.363,
+                      arm_com=(0.232, 0.0), a_x: float = 0.2) -> Design:
     """The Peaucellier-Lipkin writing board of Singh & Ananthasuresh, balanced (Sec. III.B).
 
     Parameters
     ----------
-    W : seven floats
+    weights : seven floats
         Weights of bodies 1-7 (N), > 0 (the paper's ``W1 ... W7``).
-    Wb : float
-        The board's load at ``P`` (N), >= 0.
-    d, l, s : float
-        Crank, long arm and rhombus side (m).
-    p_arm : float
-        Centre of mass of arms 2 and 3 from ``O`` (m).
-    a_x1 : float
-        Attachment of the crank's spring (m), > 0; its anchor is ``a_x1`` above ``A``.
+    board_weight : float
+        The board's load ``Wb`` at ``P`` (N), >= 0.
+    crank, arm, side : float
+        Crank ``d``, long arm ``l`` and rhombus side ``s`` (m); see
+        :class:`balancelab.PeaucellierKinematics`.
+    arm_com : (float, float)
+        Centre of mass ``(p_arm, 0)`` of arms 2 and 3 in their frames (m), on their axes.
+    a_x : float
+        Attachment ``a_x1`` of the crank's spring (m), > 0; its anchor is ``a_x1`` above ``A``.
 
     Returns
     -------
@@ -67,13 +68,13 @@ def peaucellier_board(W=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), Wb: float 
     >>> round(d.parameters["k1"], 2), round(d.parameters["k2"], 2), round(d.parameters["a_x2"], 3)
     (45.88, 33.02, 0.468)
     """
-    if len(W) != 7:
-        raise ValueError(f"W must hold the seven body weights W1..W7 (N), got {len(W)} values")
-    W = [finite_real(f"W{i + 1} (N)", v, positive=True) for i, v in enumerate(W)]
-    Wb = finite_real("Wb (board load, N)", Wb, nonnegative=True)
-    p_arm = finite_real("p_arm (m)", p_arm, positive=True)
-    a_x1 = finite_real("a_x1 (m)", a_x1, positive=True)
-    kin = PeaucellierKinematics(d, l, s)
+    W = finite_reals("weights (the seven body weights W1..W7, N)", weights, 7, positive=True)
+    Wb = finite_real("board_weight (N)", board_weight, nonnegative=True)
+    p_arm, p_arm_y = planar_point("arm_com (m)", arm_com)
+    if p_arm <= 0 or p_arm_y != 0:
+        raise ValueError(f"arm_com must be (p_arm, 0) with p_arm > 0 (on the arms' axes), got {arm_com}")
+    a_x1 = finite_real("a_x (m)", a_x, positive=True)
+    kin = PeaucellierKinematics(crank, arm, side)
     d, l, s = kin.d, kin.l, kin.s
     # lever: crank with W1 at its midpoint and half of W4 and W5 at C (eqs 18-20)
     moment1 = W[0] * d / 2 + (W[3] + W[4]) / 2 * d

@@ -29,25 +29,26 @@ __all__ = ["scissors_lift"]
 
 @example("scissors_lift", "Projector scissors lift, one ZFL and one finite-free-length spring (Singh Sec. IV)",
          chapter=6)
-def scissors_lift(a: float = 0.5, arm_mass: float = 1.0, slider_mass: float = 0.2,
-                  platform_mass: float = 2.0, payload: float = 5.0, l10: float | None = None) -> Design:
+def scissors_lift(length: float = 0.5, arm_mass: float = 1.0, slider_mass: float = 0.2,
+                  platform_mass: float = 2.0, payload_mass: float = 5.0,
+                  free_length: float | None = None) -> Design:
     """The projector lift: a two-stage scissors balanced by two springs (Singh eqs 52-59).
 
     Parameters
     ----------
-    a : float
-        Arm length (m), > 0.
+    length : float
+        Arm length ``a`` (m), > 0.
     arm_mass : float
         Mass of each of the four arms (kg), > 0, at its midpoint.
     slider_mass : float
         Mass of each slider (kg), > 0.
     platform_mass : float
         Mass of the platform (kg), > 0.
-    payload : float
+    payload_mass : float
         Mass of the projector on the platform (kg), >= 0.
-    l10 : float, optional
-        Free length of spring 1 (m), > 0; by default ``a``, the minimum-preload choice
-        (eq. 59).
+    free_length : float, optional
+        Free length ``l10`` of spring 1 (m), > 0; by default ``a``, the minimum-preload
+        choice (eq. 59). Spring 2 is always a ZFL spring (eq. 56).
 
     Returns
     -------
@@ -61,12 +62,12 @@ def scissors_lift(a: float = 0.5, arm_mass: float = 1.0, slider_mass: float = 0.
     >>> round(d.parameters["k1"] * d.parameters["l10"], 4)
     180.504
     """
-    a = finite_real("a (arm length, m)", a, positive=True)
+    a = finite_real("length (of the arms, m)", length, positive=True)
     ma = finite_real("arm_mass (kg)", arm_mass, positive=True)
     ms = finite_real("slider_mass (kg)", slider_mass, positive=True)
     mp = finite_real("platform_mass (kg)", platform_mass, positive=True)
-    mload = finite_real("payload (kg)", payload, nonnegative=True)
-    l10 = a if l10 is None else finite_real("l10 (free length of spring 1, m)", l10, positive=True)
+    mload = finite_real("payload_mass (kg)", payload_mass, nonnegative=True)
+    l10 = a if free_length is None else finite_real("free_length (of spring 1, m)", free_length, positive=True)
     m8 = mp + mload
     c = G * (ma / 2 + ma / 2 + 3 * ma / 2 + 3 * ma / 2 + 2 * ms + 2 * m8)
     k = c / l10

@@ -14,7 +14,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, finite_reals, planar_points
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.chain import TWO_TURNS, serial_2r_joints, serial_2r_kinematics
 
@@ -66,13 +66,17 @@ def _singh_design(name, W1, W2, p1, px2, l, ax, bx, by, ks, reference, parameter
                   labels=labels, parameters=parameters, reference=reference)
 
 
-def _check_loads(W1, W2, p1, px2, l):
-    W1 = finite_real("W1 (weight on body 1, N)", W1, positive=True)
-    W2 = finite_real("W2 (weight on body 2, N)", W2, positive=True)
-    p1 = planar_point("p1 (point of W1 on body 1, m)", p1)
-    px2 = finite_real("p_x2 (point of W2 on body 2, m)", px2)
-    l = finite_real("l (length of body 1, m)", l, positive=True)
-    return W1, W2, p1, px2, l
+def _check_loads(weights, coms, length, *, on_axis: bool = False):
+    """Checked loads of Singh's 2R: ``W1, W2, p1, p_x2, l`` (the paper's symbols)."""
+    W1, W2 = finite_reals("weights (on bodies 1 and 2, N)", weights, 2, positive=True)
+    p1, p2 = planar_points("coms (points of W1 on body 1 and W2 on body 2, m)", coms, 2)
+    if p2[1] != 0:
+        raise ValueError(f"coms[1] must lie on body 2's axis, (p_x2, 0): Singh's 2R has no p_y2, got {p2}")
+    if on_axis and p1[1] != 0:
+        raise ValueError(f"coms[0] must lie on body 1's axis, (p_x1, 0), in the simplified 2R, got {p1}; "
+                         "use serial_2r_min_preload for p_y1 != 0")
+    l = finite_real("length (of body 1, m)", length, positive=True)
+    return W1, W2, p1, p2[0], l
 
 
 def _positive_k(name, value, hint):
@@ -85,9 +89,8 @@ def _positive_k(name, value, hint):
 
 
 @example("serial_2r_simplified", "Simplified 2R with three ZFL springs (Singh eqs 21-28)", chapter=4)
-def serial_2r_simplified(W1: float = 10.0, W2: float = 20.0, p_x1: float = 1.0, p_x2: float = 2.0,
-                         l: float = 1.5, a_x1: float = 1.0, b_y1: float = 1.0, a_x2: float = 2.0,
-                         b_y2: float = 3.5, a_x3: float = -2.0, b_y3: float = -0.5) -> Design:
+def serial_2r_simplified(weights=(10.0, 20.0), coms=((1.0, 0.0), (2.0, 0.0)), length: float = 1.5,
+                         a_x=(1.0, 2.0, -2.0), b_y=(1.0, 3.5, -0.5)) -> Design:
     """Singh & Ananthasuresh's simplified 2R with three ZFL springs (eqs 21-28).
 
     Loads ``W1`` at ``(p_x1, 0)`` on body 1 and ``W2`` at ``(p_x2, 0)`` on body 2; springs
@@ -100,14 +103,14 @@ def serial_2r_simplified(W1: float = 10.0, W2: float = 20.0, p_x1: float = 1.0, 
 
     Parameters
     ----------
-    W1, W2 : float
-        Weights (N), > 0.
-    p_x1, p_x2 : float
-        Their points along bodies 1 and 2 (m).
-    l : float
-        Length of body 1 (m), > 0.
-    a_x1, b_y1, a_x2, b_y2, a_x3, b_y3 : float
-        The six free choices (m); ``a_x2 != a_x3`` ... see Raises.
+    weights : (float, float)
+        ``W1``, ``W2`` (N), > 0.
+    coms : two (float, float)
+        Their points ``(p_x1, 0)`` on body 1 and ``(p_x2, 0)`` on body 2 (m): on the links' axes.
+    length : float
+        Length ``l`` of body 1 (m), > 0.
+    a_x, b_y : (float, float, float)
+        The six free choices ``a_x1, a_x2, a_x3`` and ``b_y1, b_y2, b_y3`` (m); see Raises.
 
     Returns
     -------
@@ -125,9 +128,10 @@ def serial_2r_simplified(W1: float = 10.0, W2: float = 20.0, p_x1: float = 1.0, 
     >>> round(d.parameters["k2"], 3), round(d.parameters["k3"], 3)
     (5.0, 5.0)
     """
-    W1, W2, p1, p_x2, l = _check_loads(W1, W2, (p_x1, 0.0), p_x2, l)
-    vals = {n: finite_real(f"{n} (m)", v) for n, v in
-            dict(a_x1=a_x1, b_y1=b_y1, a_x2=a_x2, b_y2=b_y2, a_x3=a_x3, b_y3=b_y3).items()}
+    W1, W2, p1, p_x2, l = _check_loads(weights, coms, length, on_axis=True)
+    ax = finite_reals("a_x (m)", a_x, 3)
+    by = finite_reals("b_y (m)", b_y, 3)
+    vals = dict(a_x1=ax[0], b_y1=by[0], a_x2=ax[1], b_y2=by[1], a_x3=ax[2], b_y3=by[2])
     if vals["b_y2"] == vals["b_y3"]:
         raise ValueError("b_y2 == b_y3 is singular: eqs 26-27 divide by b_y2 - b_y3")
     for n in ("a_x2", "a_x3"):
@@ -148,7 +152,7 @@ def serial_2r_simplified(W1: float = 10.0, W2: float = 20.0, p_x1: float = 1.0, 
                          {"k1": k1, "k2": k2, "k3": k3, **vals})
 
 
-def max_work_angle(W1: float, W2: float, p1, l: float) -> float:
+def max_work_angle(weights, coms, length: float) -> float:
     """Angle of body 1 at which the loads' energy is largest (Singh eq. 35), with ``atan2``.
 
     The loads' energy ``(W1 p_x1 + W2 l) sin theta_1 + W1 p_y1 cos theta_1 + ...`` is
@@ -157,31 +161,36 @@ def max_work_angle(W1: float, W2: float, p1, l: float) -> float:
 
     Parameters
     ----------
-    W1, W2 : float
-        Weights (N).
-    p1 : (float, float)
-        Point of ``W1`` on body 1 (m).
-    l : float
-        Length of body 1 (m).
+    weights : (float, float)
+        ``W1``, ``W2`` (N).
+    coms : two (float, float)
+        Points ``p1`` of ``W1`` on body 1 and ``(p_x2, 0)`` of ``W2`` on body 2 (m).
+    length : float
+        Length ``l`` of body 1 (m).
 
     Returns
     -------
     float
-        The angle (rad).
+        The angle ``theta*`` (rad).
 
     Examples
     --------
-    >>> round(math.degrees(max_work_angle(10, 20, (1.0, 0.5), 1.5)), 3)
+    >>> round(math.degrees(max_work_angle((10, 20), ((1.0, 0.5), (2.0, 0.0)), 1.5)), 3)
     82.875
-    >>> round(math.degrees(max_work_angle(10, 20, (1.0, -0.5), 1.5)), 3)
+    >>> round(math.degrees(max_work_angle((10, 20), ((1.0, -0.5), (2.0, 0.0)), 1.5)), 3)
     97.125
     """
+    W1, W2, p1, _, l = _check_loads(weights, coms, length)
+    return _theta_star(W1, W2, p1, l)
+
+
+def _theta_star(W1, W2, p1, l) -> float:
     return math.atan2(W1 * p1[0] + W2 * l, W1 * p1[1])
 
 
 def _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3):
     """Anchors (eqs 42-46) and stiffnesses (eqs 47-49, projected form) of the min-preload 2R."""
-    th = max_work_angle(W1, W2, p1, l)
+    th = _theta_star(W1, W2, p1, l)
     c, s = math.cos(th), math.sin(th)
     b1 = (ax1 * c, ax1 * s)
     b2 = (l * c, ax2 + l * s)
@@ -195,8 +204,8 @@ def _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3):
 
 @example("serial_2r_min_preload", "General 2R with minimum preload (Singh eqs 35-49, Sec. III.A numbers)",
          chapter=4)
-def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x2: float = 2.0,
-                          l: float = 1.5, a_x=(1.0, 2.0, -2.0)) -> Design:
+def serial_2r_min_preload(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), length: float = 1.5,
+                          a_x=(1.0, 2.0, -2.0)) -> Design:
     """2R balanced by three ZFL springs with the least preload (Singh eqs 29-49).
 
     Every spring has zero length in the configuration of maximum external work,
@@ -218,14 +227,12 @@ def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
 
     Parameters
     ----------
-    W1, W2 : float
-        Weights (N), > 0.
-    p1 : (float, float)
-        Point of W1 on body 1 (m).
-    p_x2 : float
-        Point of W2 along body 2 (m), != 0.
-    l : float
-        Length of body 1 (m), > 0.
+    weights : (float, float)
+        ``W1``, ``W2`` (N), > 0.
+    coms : two (float, float)
+        Point ``p1`` of W1 on body 1 and ``(p_x2, 0)`` of W2 on body 2 (m), ``p_x2 != 0``.
+    length : float
+        Length ``l`` of body 1 (m), > 0.
     a_x : (float, float, float)
         Free choices ``a_x1, a_x2, a_x3`` (m); ``a_x2 > 0 > a_x3`` for ``p_x2 > 0``.
 
@@ -239,7 +246,7 @@ def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
     >>> round(d.parameters["k1"], 2), round(d.parameters["b_y2"], 4)
     (17.81, 3.4884)
     """
-    W1, W2, p1, p_x2, l = _check_loads(W1, W2, p1, p_x2, l)
+    W1, W2, p1, p_x2, l = _check_loads(weights, coms, length)
     try:
         ax1, ax2, ax3 = (finite_real(f"a_x{i + 1} (m)", v) for i, v in enumerate(a_x))
     except (TypeError, ValueError) as err:
@@ -266,8 +273,8 @@ def serial_2r_min_preload(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
 
 
 @example("serial_2r_two_springs", "General 2R with two ZFL springs (Singh eq. 50)", chapter=4)
-def serial_2r_two_springs(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x2: float = 2.0,
-                          l: float = 1.5, a_x2: float = 2.0) -> Design:
+def serial_2r_two_springs(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), length: float = 1.5,
+                          a_x2: float = 2.0) -> Design:
     """The general 2R balanced by only two ZFL springs, both on body 2 (Singh eq. 50).
 
     Setting ``k1 = 0`` in eq. 49 fixes ``a_x2 a_x3 = -l W2 p_x2 b_x2 / (W1 p_y1)``; the
@@ -276,7 +283,7 @@ def serial_2r_two_springs(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
 
     Parameters
     ----------
-    W1, W2, p1, p_x2, l : see :func:`serial_2r_min_preload`.
+    weights, coms, length : see :func:`serial_2r_min_preload`.
     a_x2 : float
         The free choice (m); ``a_x3`` follows from eq. 50.
 
@@ -290,14 +297,14 @@ def serial_2r_two_springs(W1: float = 10.0, W2: float = 20.0, p1=(1.0, 0.5), p_x
     >>> len(d.springs), round(d.parameters["a_x3"], 4)
     (2, -1.1163)
     """
-    W1, W2, p1, p_x2, l = _check_loads(W1, W2, p1, p_x2, l)
+    W1, W2, p1, p_x2, l = _check_loads(weights, coms, length)
     a_x2 = finite_real("a_x2 (m)", a_x2)
     if p1[1] == 0:
         raise ValueError("p_y1 must be non-zero: with W1 on the line of body 1 (p_y1 = 0) eq. 50 has "
                          "no solution and body 1 needs its own spring")
     if a_x2 == 0:
         raise ValueError("a_x2 must be non-zero")
-    th = max_work_angle(W1, W2, p1, l)
+    th = _theta_star(W1, W2, p1, l)
     bx2 = l * math.cos(th)
     a_x3 = -l * W2 * p_x2 * bx2 / (W1 * p1[1] * a_x2)
     th, _, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, 1.0, a_x2, a_x3)
