@@ -23,8 +23,8 @@ OPTIONS = [(2, "A", "A"), (2, "A", "B"), (3, "A", "A"), (3, "A", "B"), (3, "B", 
 
 
 def _all_options(fb):
-    from balancelab.methods.deepak import roberts as cg
-    from balancelab.methods.deepak import spring_fourbar as sf
+    from balancelab import deepak as cg
+    from balancelab import deepak as sf
 
     out = []
     for c in cg.cognates(fb):
@@ -39,7 +39,7 @@ def _all_options(fb):
 
 
 def run() -> list[tuple[str, float, str, str]]:
-    from balancelab.methods.deepak import spring_fourbar as sf
+    from balancelab import deepak as sf
 
     rows = []
     fb = sf.example_fourbar()

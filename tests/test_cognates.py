@@ -8,8 +8,8 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from balancelab.methods.deepak import roberts as cg
-from balancelab.methods.deepak import spring_fourbar as sf
+from balancelab import deepak as cg
+from balancelab import deepak as sf
 from conftest import assert_exactly_balanced
 
 FB = sf.example_fourbar()
@@ -225,5 +225,5 @@ def test_focal_pivot_at_a_vertex_when_the_circles_touch():
     D = [np.exp(2.2j), np.exp(-1j * eta) * (V[0] - V[1]), np.exp(-1j * eta) * (V[0] - V[2])]
     case, P = cg.focal_pivot_circles([(v.real, v.imag) for v in V], [(d.real, d.imag) for d in D])
     assert case == "iii" and P == pytest.approx((0.0, 0.0), abs=1e-12)
-    c, sigma, t = cg._family_solve(V, [d / abs(d) for d in D])
+    c, sigma, t = cg.similar_triangle_family(V, [d / abs(d) for d in D])
     assert abs(-c / sigma) < 1e-12

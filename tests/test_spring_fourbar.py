@@ -9,7 +9,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from balancelab import Spring
-from balancelab.methods.deepak import spring_fourbar as sf
+from balancelab import deepak as sf
 from conftest import assert_exactly_balanced
 
 FB = sf.example_fourbar()
@@ -408,7 +408,7 @@ def test_nonsense_lengths_and_family_values_are_refused():
     for l1, l2 in ((-0.3, 0.3), (0.3, 0.0), (float("nan"), 0.3)):
         with pytest.raises(ValueError, match="l1|l2"):
             sf.technique1_feasible(FB, K, l1, l2)
-    with pytest.raises(ValueError, match="l1_values"):
+    with pytest.raises(ValueError, match="length_1_values"):
         sf.technique1_family(FB, K, KL, [float("nan"), 0.3], [0.3])
     for bad in ([float("nan"), 0.1], [0.1, float("inf")], [[0.1, 0.2]]):
         with pytest.raises(ValueError, match="h_values"):

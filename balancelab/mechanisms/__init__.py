@@ -13,13 +13,15 @@ What it may import: ``balancelab.core``.
 """
 from .base import ExplicitKinematics, TreeKinematics
 from .chain import serial_2r_joints, serial_2r_kinematics
-from .fourbar import FourBarKinematics, fourbar_joints
-from .geometry import binary_link_point, circle_intersection, rotate
+from .fourbar import (FourBar, FourBarKinematics, check_assembly, coupler_curve, fourbar_design, fourbar_joints,
+                      fourbar_labels)
+from .geometry import as_complex, as_point, binary_link_point, circle_intersection, rotate
 from .lever import lever_design, lever_kinematics
 from .peaucellier import PeaucellierKinematics
 from .scissors import scissors_joints, scissors_kinematics
 
 __all__ = ["ExplicitKinematics", "TreeKinematics", "serial_2r_joints", "serial_2r_kinematics",
-           "FourBarKinematics", "fourbar_joints", "binary_link_point", "circle_intersection", "rotate",
+           "FourBar", "FourBarKinematics", "check_assembly", "coupler_curve", "fourbar_design", "fourbar_joints",
+           "fourbar_labels", "as_complex", "as_point", "binary_link_point", "circle_intersection", "rotate",
            "lever_design", "lever_kinematics", "PeaucellierKinematics", "scissors_joints",
            "scissors_kinematics"]

@@ -2,13 +2,22 @@
 
 Every closed-form loop solution in :mod:`balancelab.mechanisms` places its joints with
 these functions; they work on numpy arrays (vectorized over configurations) and, where
-noted, on sympy expressions. Layer: mechanisms; imports nothing from balancelab.
+noted, on sympy expressions. Methods that write planar vectors as complex numbers
+convert with :func:`as_complex` and :func:`as_point`; a pose function built on these
+numeric-only tools guards its sympy path with :func:`numeric_only`. Layer: mechanisms;
+imports nothing from balancelab.
 """
 from __future__ import annotations
 
+from types import ModuleType
+
 import numpy as np
 
-__all__ = ["rotate", "binary_link_point", "circle_intersection"]
+__all__ = ["Point", "rotate", "binary_link_point", "circle_intersection", "as_complex", "as_point",
+           "numeric_only"]
+
+#: a planar point or vector ``(x, y)`` (m), in type hints
+Point = tuple[float, float]
 
 
 def rotate(lib, angle, point):
@@ -73,3 +82,78 @@ def circle_intersection(c0, r0, c1, r1, side=1):
     h = np.sqrt(np.clip(r0 * r0 - a * a, 0.0, None))
     ux, uy = dx / ds, dy / ds
     return c0[0] + a * ux - side * h * uy, c0[1] + a * uy + side * h * ux, ok
+
+
+def as_complex(point: Point | complex) -> complex:
+    """A planar point or vector ``(x, y)`` as the complex number ``x + i y``.
+
+    Parameters
+    ----------
+    point : (float, float) or complex
+        Coordinates (m); a complex number is returned unchanged.
+
+    Returns
+    -------
+    complex
+
+    Examples
+    --------
+    >>> as_complex((0.3, -0.2))
+    (0.3-0.2j)
+    """
+    if isinstance(point, (complex, np.complexfloating)):
+        return complex(point)
+    return complex(point[0], point[1])
+
+
+def as_point(value: complex) -> tuple[float, float]:
+    """A complex number as a point ``(x, y)`` of floats; round-off below 1e-15 m becomes an exact zero.
+
+    Parameters
+    ----------
+    value : complex
+        ``x + i y`` (m).
+
+    Returns
+    -------
+    (float, float)
+
+    Examples
+    --------
+    >>> as_point(0.25 + 1e-17j)
+    (0.25, 0.0)
+    """
+    x, y = float(value.real), float(value.imag)
+    return (0.0 if abs(x) < 1e-15 else x, 0.0 if abs(y) < 1e-15 else y)
+
+
+def numeric_only(lib: ModuleType) -> None:
+    """Refuse the sympy path of a pose function built on numeric-only geometry.
+
+    A pose function of :class:`balancelab.mechanisms.base.ExplicitKinematics` receives
+    the math library ``lib`` (numpy or sympy); one that uses complex arithmetic or
+    :func:`circle_intersection` calls this first, so a symbolic request raises a clear
+    ``NotImplementedError`` (the design's energy is then checked numerically).
+
+    Parameters
+    ----------
+    lib : module
+        ``numpy`` passes; anything else raises.
+
+    Raises
+    ------
+    NotImplementedError
+        If ``lib`` is not numpy.
+
+    Examples
+    --------
+    >>> numeric_only(np)
+    >>> import sympy
+    >>> numeric_only(sympy)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    NotImplementedError: this design's kinematics is numeric only; ...
+    """
+    if lib is not np:
+        raise NotImplementedError("this design's kinematics is numeric only; its energy is checked "
+                                  "numerically by balance_report()")
