@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parent.parent
 _COLD = r"""
 import time
 t0 = time.perf_counter()
-from balancelab.methods.lustig import stiffness as sm
+from balancelab.methods import lustig as sm
 {body}
 t1 = time.perf_counter()
 {body}
@@ -44,7 +44,7 @@ def _cold(body: str) -> tuple[float, float]:
 
 
 def run() -> list[tuple[str, float, str, str]]:
-    from balancelab.methods.lustig import stiffness as sm
+    from balancelab.methods import lustig as sm
 
     rows = []
     lengths, masses, coms = (0.4, 0.3, 0.25), (3.0, 2.0, 1.0), ((0.2, 0.0), (0.15, 0.02), (0.1, 0.0))

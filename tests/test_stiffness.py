@@ -10,19 +10,17 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from balancelab import G, Spring
-from balancelab.methods.lustig import stiffness as sm
-from balancelab.methods.lustig.stiffness import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, InfeasibleDesign,
-                                                 SerialChain, balance_all_pairs,
-                                                 chain_parameter_names, constraint_equations,
-                                                 constraint_residuals, diagonal_residual,
-                                                 gravity_conditions, lustig_a1, lustig_alpha,
-                                                 lustig_b1, lustig_min_energy_pose,
-                                                 lustig_table3e_case, lustig_values,
-                                                 quadratic_energy, solve, spring2_invariant,
-                                                 stiffness_matrix, stiffness_matrix_symbolic,
-                                                 synthesize)
+from balancelab.methods import lustig
+from balancelab.methods.lustig import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, InfeasibleDesign, SerialChain,
+                                       balance_all_pairs, chain_parameter_names, constraint_equations,
+                                       constraint_residuals, diagonal_residual, gravity_conditions,
+                                       lustig_a1, lustig_alpha, lustig_b1, lustig_min_energy_pose,
+                                       lustig_table3e_case, lustig_values, quadratic_energy, solve,
+                                       solve_symbolic, spring2_invariant, stiffness_matrix,
+                                       stiffness_matrix_symbolic, synthesize)
+from balancelab.methods.lustig import solving
 
-from conftest import assert_exactly_balanced, assert_symbolic_matches_numeric
+from conftest import assert_exactly_balanced, assert_symbolic_matches_numeric, spring_perturbations
 
 # Table 3e as printed (solved rows above the line, inputs below).
 TABLE_3E = {
@@ -56,6 +54,33 @@ def _all_pairs(n):
     return tuple((i, j) for j in range(1, n + 1) for i in range(j))
 
 
+def _independent_energy(lengths, masses, coms, springs, q, g=G):
+    """Potential energy (J) from the geometry alone, at absolute link angles ``q`` (samples, n).
+
+    Joint positions added link by link, ``1/2 k |A - B|^2`` per ZFL spring, ``m g y`` per
+    weight: nothing of the stiffness-matrix method or of ``Design``.
+    """
+    q = np.atleast_2d(np.asarray(q, dtype=float))
+    direction = np.stack([np.cos(q), np.sin(q)], axis=2)  # (samples, n, 2)
+    origins = [np.zeros((len(q), 2)), np.zeros((len(q), 2))]  # ground, body 1
+    for i in range(1, len(lengths)):
+        origins.append(origins[i] + lengths[i - 1] * direction[:, i - 1])
+
+    def world(body, point):
+        if body == 0:
+            return np.broadcast_to(np.asarray(point, dtype=float), (len(q), 2))
+        c, s = direction[:, body - 1, 0], direction[:, body - 1, 1]
+        x, y = point
+        return origins[body] + np.stack([c * x - s * y, s * x + c * y], axis=1)
+
+    energy = np.zeros(len(q))
+    for s in springs:
+        energy += 0.5 * s.k * np.sum((world(s.a.body, s.a.point) - world(s.b.body, s.b.point)) ** 2, axis=1)
+    for i, (m, com) in enumerate(zip(masses, coms)):
+        energy += m * g * world(i + 1, com)[:, 1]
+    return energy
+
+
 # ----------------------------------------------------------------------------- Table 3e
 @pytest.mark.parametrize("case", CASES)
 def test_table3e_every_printed_digit(case):
@@ -76,10 +101,22 @@ def test_table3e_cases_balanced_and_perturbations_detected(case):
 
 
 @pytest.mark.parametrize("case", CASES)
-def test_zero_argument_factories(case):
-    d = getattr(sm, f"lustig_case{case}")()
+def test_case_factories_balanced_by_an_independent_energy(case):
+    # the registered zero-argument factories: the springs solve() found keep the energy,
+    # summed by hand, constant over many configurations; a 1e-3 change of any spring breaks it
+    d = getattr(lustig, f"lustig_case{case}")()
     assert d.name.endswith(f"case {case}")
-    assert d.parameters == lustig_table3e_case(case).parameters
+    v = d.parameters
+    lengths, masses = (v["L2"], v["L3"]), (v["m2"], v["m3"])
+    coms = ((v["sx2"], v["sy2"]), (v["sx3"], v["sy3"]))
+    q = np.random.default_rng(case).uniform(-np.pi, np.pi, (2000, 2))
+    scale = np.ptp(_independent_energy(lengths, masses, coms, (), q))  # the unbalanced chain
+    assert scale > 10.0  # J
+    assert np.ptp(_independent_energy(lengths, masses, coms, d.springs, q)) < 1e-12 * scale
+    perturbed = list(spring_perturbations(d))
+    assert len(perturbed) >= 6  # k, a and b of both springs, less the zero coordinates
+    for label, bad in perturbed:
+        assert np.ptp(_independent_energy(lengths, masses, coms, bad.springs, q)) > 1e-6 * scale, label
 
 
 def test_table3e_case_rejects_other_cases():
@@ -144,12 +181,28 @@ def test_gravity_conditions_are_the_ground_row(n):
         assert sp.expand(K[0, 2 * u - 1] - g * (s[f"m{u}"] * s[f"sx{u}"] + below * s[f"L{u}"])) == 0
 
 
-def test_docstring_examples_run():
-    import doctest
-
-    result = doctest.testmod(sm, optionflags=doctest.ELLIPSIS)
-    assert result.attempted > 20
-    assert result.failed == 0
+@pytest.mark.parametrize("n", [1, 2, 3, 4])
+def test_stiffness_matrix_reproduces_an_independent_energy(n):
+    # 1/2 Q^T K_t Q against the energy summed spring by spring and weight by weight, for a
+    # random chain with a spring across every pair (one more given distal body first), any g
+    rng = np.random.default_rng(40 + n)
+    topo = _all_pairs(n) + ((n, 0),)
+    lengths = tuple(rng.uniform(0.1, 1.0, n))
+    masses = tuple(rng.uniform(0.2, 5.0, n))
+    coms = tuple(map(tuple, rng.uniform(-0.3, 0.5, (n, 2))))
+    springs = [Spring(rng.uniform(50, 2000), 0.0, (a, tuple(rng.uniform(-0.5, 0.5, 2))),
+                      (b, tuple(rng.uniform(-0.5, 0.5, 2)))) for a, b in topo]
+    chain = SerialChain(lengths, masses, coms, tuple(springs))
+    g = rng.uniform(1.0, 20.0)
+    q = rng.uniform(-np.pi, np.pi, (300, n))
+    want = _independent_energy(lengths, masses, coms, springs, q, g)
+    assert np.ptp(want) > 1.0  # J: the random chain is far from balanced
+    trig = np.stack([np.cos(q), np.sin(q)], axis=2).reshape(len(q), 2 * n)
+    Q = np.hstack([np.ones((len(q), 1)), np.zeros((len(q), 1)), trig])
+    K = stiffness_matrix(chain, g)
+    atol = 1e-12 * np.abs(want).max()
+    np.testing.assert_allclose(0.5 * np.einsum("si,ij,sj->s", Q, K, Q), want, rtol=0, atol=atol)
+    np.testing.assert_allclose(quadratic_energy(chain, q, g), want, rtol=0, atol=atol)
 
 
 # ------------------------------------------------------- symbolic vs numeric, energy
@@ -218,7 +271,7 @@ def test_case_symbolic_energy(case):
 # ----------------------------------------------------------------- eqs 18-20, Fig. 4
 def test_eq19_is_the_solution_for_b1():
     K, s = stiffness_matrix_symbolic(2, LUSTIG_TOPOLOGY)
-    sols = sm.solve_symbolic(2, LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS)
+    sols = solve_symbolic(2, LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS)
     assert len(sols) == 1
     b = {s[k]: v for k, v in sols[0].items()}
     L2, m2, m3 = s["L2"], s["m2"], s["m3"]
@@ -322,19 +375,19 @@ def test_spring2_rotates_with_a2():
 
 # --------------------------------------------------------------------------- solving
 def test_solve_cached_symbolic_solution():
-    sm._symbolic_solution.cache_clear()
+    solving._symbolic_solution.cache_clear()
     v = _inputs(2)
     solve(2, LUSTIG_TOPOLOGY, v, LUSTIG_UNKNOWNS)
-    before = sm._symbolic_solution.cache_info()
+    before = solving._symbolic_solution.cache_info()
     solve(2, LUSTIG_TOPOLOGY, v, LUSTIG_UNKNOWNS)
-    after = sm._symbolic_solution.cache_info()
+    after = solving._symbolic_solution.cache_info()
     assert after.hits == before.hits + 1 and after.misses == before.misses
 
 
 @pytest.mark.parametrize("n", [2, 3, 4])
 def test_symbolic_solve_agrees_with_numeric_all_pairs(n):
     d = balance_all_pairs((0.4, 0.3, 0.25, 0.2)[:n], (3.0, 2.0, 1.0, 0.5)[:n],
-                          ((0.2, 0.01), (0.15, -0.02), (0.1, 0.0), (0.1, 0.03))[:n], stiffness=800.0)
+                          ((0.2, 0.01), (0.15, -0.02), (0.1, 0.0), (0.1, 0.03))[:n], k=800.0)
     topo = _all_pairs(n)
     unknowns = tuple(f"b{c}{j}" for j in range(1, len(topo) + 1) for c in "xy")
     sol = solve(n, topo, d.parameters, unknowns)
@@ -455,7 +508,7 @@ def test_all_pairs_bad_anchor():
     with pytest.raises(ValueError, match="distal joint"):
         balance_all_pairs((0.3, 0.3), (1.0, 1.0), ((0.1, 0.0), (0.1, 0.0)), anchors={(1, 2): (0.3, 0.0)})
     with pytest.raises(ValueError, match="> 0"):
-        balance_all_pairs((0.3, 0.3), (1.0, 1.0), ((0.1, 0.0), (0.1, 0.0)), stiffness=0.0)
+        balance_all_pairs((0.3, 0.3), (1.0, 1.0), ((0.1, 0.0), (0.1, 0.0)), k=0.0)
 
 
 # ----------------------------------------------------------------- property tests
@@ -471,7 +524,7 @@ def test_property_all_pairs_balanced(n, data):
     masses = data.draw(st.lists(_mass, min_size=n, max_size=n))
     coms = data.draw(st.lists(st.tuples(_off, _off), min_size=n, max_size=n))
     k = data.draw(st.floats(50.0, 5000.0))
-    d = balance_all_pairs(lengths, masses, coms, stiffness=k)
+    d = balance_all_pairs(lengths, masses, coms, k=k)
     r = d.balance_report(n=1000)
     assert r.balanced, r
     chain = SerialChain(tuple(lengths), tuple(masses), tuple(coms), d.springs)
