@@ -146,3 +146,24 @@ def test_parameter_animation_frame_for_an_unreachable_configuration():
     assert anim.designs[1] is None and "cannot be reached" in anim.messages[1]
     assert anim.designs[2] is None and "cannot assemble" in anim.messages[2]
     assert len(_frames(anim.to_jshtml())) == 3
+
+
+def test_animation_frames_show_the_designs_own_numbers():
+    d = bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)  # not balanced: a curved energy
+    anim = animate(d, frames=12)
+    y = anim.energy.lines["total"].get_data()[1]
+    np.testing.assert_array_equal(y, d.potential_energy(anim.energy.grid).total)
+    (load,) = d.loads
+    for i in (0, 5, 11):
+        anim.frame_image(i)
+        assert anim.energy.marker.get_data()[1][0] == float(d.potential_energy(anim.path[i]).total)
+        np.testing.assert_allclose(anim.drawing.load_segments[0][0],
+                                   d.world_points(anim.path[i], [(load.body, load.point)])[0], atol=1e-15)
+    # a parameter sweep: each frame's energy curve is that frame's design's
+    sweep = animate_parameter(lambda b_y: bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, b_y), "b_y",
+                              [0.2, 0.4], q=[0.6])
+    for i, design in enumerate(sweep.designs):
+        sweep.frame_image(i)
+        y = sweep.energy.lines["total"].get_data()[1]
+        np.testing.assert_array_equal(y, design.potential_energy(sweep.energy.grid).total)
+        assert sweep.drawing.design is design

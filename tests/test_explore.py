@@ -93,7 +93,7 @@ def test_fourbar_that_cannot_assemble_keeps_the_last_picture():
 
 
 def test_unreachable_configuration_is_refused_with_a_message():
-    ex = explore(bl.singh.scissors_lift, {"a": (0.2, 0.8, 0.05)})
+    ex = explore(bl.singh.scissors_lift, {"length": (0.2, 0.8, 0.05)})
     hi = ex.design.q_range[0, 1]
     before = ex.png
     assert not ex.set(theta=hi + 0.5)

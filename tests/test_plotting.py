@@ -14,8 +14,9 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import balancelab as bl  # noqa: E402
-from balancelab.viz import plotting as P  # noqa: E402
-from balancelab.core.elements import G, Joint, Spring, gravity_load  # noqa: E402
+from balancelab.core.elements import G, Joint, Pulley, Spring, gravity_load  # noqa: E402
+from balancelab.methods import realize as rz  # noqa: E402
+from balancelab.viz import drawing as D, energy as E, frame as F, spaces as S  # noqa: E402
 
 
 # ----------------------------------------------------------------- test designs
@@ -70,10 +71,15 @@ def _close_figures():
 
 
 # ----------------------------------------------------------------- the designs
-def test_catalog_is_there_and_not_empty():
+def test_draw_titles_each_design_with_its_own_name():
     cat = bl.catalog()
     assert len(cat) >= 10
-    assert all(isinstance(cat[name](), bl.Design) for name in list(cat)[:3])
+    for name in list(cat)[:3]:
+        d = cat[name]()
+        assert D.draw(d).get_title() == d.name
+    d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    assert D.draw(d, title="mine").get_title() == "mine"
+    assert D.draw(d, title=False).get_title() == ""
 
 
 def test_two_link_arm_is_balanced_and_breaks_when_perturbed():
@@ -87,14 +93,14 @@ def test_two_link_arm_is_balanced_and_breaks_when_perturbed():
 
 # ------------------------------------------------------------------------ draw
 def _q(d):
-    return P.default_q(d)
+    return F.default_q(d)
 
 
 @pytest.mark.parametrize("name", ALL)
 def test_draw_places_every_artist(name):
     d = build(name)
     q = _q(d)
-    ax = P.draw(d, q)
+    ax = D.draw(d, q)
     dr = ax.drawing
     assert dr.ax is ax
     # one artist per moving body, spring and load
@@ -121,7 +127,7 @@ def test_draw_places_every_artist(name):
     for s, line in zip(d.springs, dr.springs):
         pa, pb = d.world_points(q, [s.a, s.b])
         xy = line.get_xydata()
-        if s.realization == "pulley":
+        if s.pulley is not None:
             np.testing.assert_allclose(xy[0], pb, atol=1e-12)
         else:
             np.testing.assert_allclose(xy[0], pa, atol=1e-12)
@@ -160,8 +166,8 @@ def test_update_moves_artists_like_a_fresh_drawing():
     d = bl.catalog()["fourbar_two_springs"]()
     lo, hi = d.q_range[0]
     q1, q2 = [lo + 0.3 * (hi - lo)], [lo + 0.7 * (hi - lo)]
-    moved = P.draw(d, q1).drawing.update(q2)
-    fresh = P.draw(d, q2).drawing
+    moved = D.draw(d, q1).drawing.update(q2)
+    fresh = D.draw(d, q2).drawing
     for b in fresh.links:
         np.testing.assert_allclose(moved.links[b].get_xy(), fresh.links[b].get_xy(), atol=1e-12)
     for a, b in zip(moved.springs, fresh.springs):
@@ -170,7 +176,7 @@ def test_update_moves_artists_like_a_fresh_drawing():
 
 
 def test_update_with_a_new_design_of_another_structure_rebuilds():
-    ax = P.draw(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), [0.4])
+    ax = D.draw(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), [0.4])
     dr = ax.drawing
     arm = two_link_arm()
     dr.update([0.1, 0.5], arm)
@@ -181,7 +187,7 @@ def test_update_with_a_new_design_of_another_structure_rebuilds():
 def test_ternary_link_is_a_plate_through_its_three_points():
     d = bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, 0.3)  # a = (0.2, -0.0667) is off the lever's axis
     q = [0.3]
-    poly = P.draw(d, q).drawing.links[1]
+    poly = D.draw(d, q).drawing.links[1]
     outline = poly.get_xy()[:-1]
     want = d.world_points(q, [(1, (0.0, 0.0)), (1, d.springs[0].b.point), (1, (0.5, 0.0))])
     assert len(outline) == 3
@@ -190,39 +196,78 @@ def test_ternary_link_is_a_plate_through_its_three_points():
 
 
 def test_zfl_finite_and_pulley_springs_look_different():
-    zfl = P.draw(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)).drawing.springs[0]
-    ordinary = P.draw(bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)).drawing.springs[0]
+    zfl = D.draw(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)).drawing.springs[0]
+    ordinary = D.draw(bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05)).drawing.springs[0]
     assert zfl.get_linestyle() == "-"
     assert ordinary.get_linestyle() != "-"
     assert zfl.get_color() != ordinary.get_color()
     d = pulley_lever()
-    dr = P.draw(d, [0.4]).drawing
+    dr = D.draw(d, [0.4]).drawing
     (pulley,) = dr.extras
     np.testing.assert_allclose(pulley.center, d.world_points([0.4], [d.springs[0].a])[0], atol=1e-12)
     assert dr.springs[0].get_color() not in (zfl.get_color(), ordinary.get_color())
 
 
+PULLEYS = [Pulley(0.05), Pulley(0.05, (1.0, 0.0), -1), Pulley(0.06, (-1.0, -1.0), 1), Pulley(0.05, (0.0, -1.0), -1),
+           "pulley"]
+
+
+@pytest.mark.parametrize("pulley", PULLEYS, ids=str)
+def test_the_drawn_pulley_spring_lies_where_the_model_puts_it(pulley):
+    """The string leaves on the model's tangent, wraps by the model's angle, and the coil is on its side."""
+    base = rz.pulley_lever(radius=0.0)
+    s = base.springs[0]
+    d = base.replace(springs=[Spring(s.k, 0.0, s.a, s.b, name="k", realization=pulley)])
+    p = d.springs[0].pulley
+    u = np.array(p.spring_direction) / np.hypot(*p.spring_direction)
+    dr = D.draw(d, [0.3]).drawing
+    (circle,) = dr.extras
+    for q in ([0.3], [-1.2], [1.4]):
+        dr.update(q)
+        pa, pb = d.world_points(q, [s.a, s.b])
+        radius = max(p.radius, 0.03 * dr.size)
+        np.testing.assert_allclose(circle.center, pa, atol=1e-12)
+        assert circle.get_radius() == pytest.approx(radius)
+        model = rz.pulley_string(pa, radius, pb, p.spring_direction, p.turn)
+        xy = dr.springs[0].get_xydata()
+        np.testing.assert_allclose(xy[0], pb, atol=1e-12)
+        np.testing.assert_allclose(xy[1], model.tangent_out, atol=1e-12)
+        dist = np.hypot(*(xy - pa).T)
+        on_pulley = np.flatnonzero(np.abs(dist - radius) < 1e-9)
+        arc = xy[1:on_pulley[-1] + 1]
+        np.testing.assert_allclose(arc[-1], model.tangent_in, atol=1e-12)
+        arc_length = np.sum(np.hypot(*np.diff(arc, axis=0).T))
+        assert arc_length == pytest.approx(radius * float(model.wrap), rel=0.01, abs=1e-12)
+        coil = xy[on_pulley[-1] + 1:]
+        assert len(coil) >= 10
+        side = (coil - pa) @ u
+        assert np.all(side > 0.02 * dr.size), "the coil must lie on the spring's side of the pulley"
+        assert side.max() > 0.12 * dr.size
+        if p.radius > 0:
+            assert radius == p.radius  # drawn at its own radius when it is visible
+
+
 def test_counterweights_are_discs_and_weights_arrows():
     d = bl.lecture.single_link_counterweight(2.0, 0.5, 4.0)
-    dr = P.draw(d, [0.0]).drawing
+    dr = D.draw(d, [0.0]).drawing
     kinds = [type(a).__name__ for a in dr.loads]
     assert kinds == ["FancyArrowPatch", "Circle"]
 
 
 def test_palette_is_okabe_ito():
-    assert P.PALETTE["vermillion"] == "#D55E00" and P.PALETTE["blue"] == "#0072B2"
-    assert set(P.STYLE.values()) <= set(P.PALETTE.values())
+    assert F.PALETTE["vermillion"] == "#D55E00" and F.PALETTE["blue"] == "#0072B2"
+    assert set(F.STYLE.values()) <= set(F.PALETTE.values())
 
 
 def test_draw_rejects_bad_input():
     d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     with pytest.raises(TypeError, match="balancelab.Design"):
-        P.draw("lever")
+        D.draw("lever")
     with pytest.raises(ValueError, match="q must hold 1 angle"):
-        P.draw(d, [0.1, 0.2])
+        D.draw(d, [0.1, 0.2])
     scissors = bl.catalog()["scissors_lift"]()
     with pytest.raises(bl.UnreachableConfiguration):
-        P.draw(scissors, [scissors.q_range[0, 1] + 0.5])
+        D.draw(scissors, [scissors.q_range[0, 1] + 0.5])
 
 
 # ---------------------------------------------------------------------- energy
@@ -231,9 +276,9 @@ def test_energy_plot_shows_the_designs_energy(name):
     d = build(name)
     if d.dof > 2:
         with pytest.raises(ValueError, match="1 or 2 degrees of freedom"):
-            P.energy_plot(d)
+            E.energy_plot(d)
         return
-    ax = P.energy_plot(d)
+    ax = E.energy_plot(d)
     view = ax.energy
     rep = d.balance_report()
     assert view.report.balanced == rep.balanced
@@ -265,7 +310,7 @@ def test_energy_plot_shows_the_designs_energy(name):
 
 def test_energy_plot_marks_a_configuration():
     d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
-    ax = P.energy_plot(d, q=[0.5])
+    ax = E.energy_plot(d, q=[0.5])
     x, y = ax.energy.marker.get_data()
     assert x[0] == pytest.approx(np.degrees(0.5))
     assert y[0] == pytest.approx(float(d.potential_energy([0.5]).total))
@@ -275,33 +320,33 @@ def test_counts_and_energy_limits_refuse_nonsense():
     d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     for n in (0, 1, 2.5, True):
         with pytest.raises(ValueError, match="n must be an integer >= 2"):
-            P.energy_plot(d, n=n)
+            E.energy_plot(d, n=n)
         with pytest.raises(ValueError, match="n must be an integer >= 2"):
-            P.lever_valley(n=n)
+            S.lever_valley(n=n)
         with pytest.raises(ValueError, match="n must be an integer >= 2"):
-            P.cognates_plot([d], point="p", n=n)
+            S.cognates_plot([d], point="p", n=n)
     with pytest.raises(ValueError, match="lo"):
-        P.energy_limits(float("nan"), 1.0)
+        E.energy_limits(float("nan"), 1.0)
     with pytest.raises(ValueError, match="lo <= hi"):
-        P.energy_limits(2.0, 1.0)
+        E.energy_limits(2.0, 1.0)
     with pytest.raises(ValueError, match="scale"):
-        P.energy_limits(0.0, 1.0, -1.0)
+        E.energy_limits(0.0, 1.0, -1.0)
     with pytest.raises(TypeError, match="BalanceReport"):
-        P.report_summary(3)
+        E.report_summary(3)
 
 
 def test_report_summary_names_verdict_and_residual():
     rep = bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05).balance_report()
-    text = P.report_summary(rep)
+    text = E.report_summary(rep)
     assert text.startswith("NOT balanced")
     assert f"{rep.residual * rep.scale:.3g} J/rad" in text
-    assert P.report_summary(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report()).startswith("balanced")
+    assert E.report_summary(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report()).startswith("balanced")
 
 
 # ---------------------------------------------------------------- design spaces
 def test_lever_valley_is_the_balanced_energy_of_the_lever():
     W, l = 10.0, 0.5
-    ax = P.lever_valley(W, l, (0.1, 0.6), (0.1, 0.6), n=26)
+    ax = S.lever_valley(W, l, (0.1, 0.6), (0.1, 0.6), n=26)
     A, B, PE = ax.valley
     for i, j in [(0, 0), (3, 17), (25, 4), (12, 12)]:
         d = bl.singh.lacoste_lever(W, l, A[i, j], B[i, j])
@@ -313,20 +358,53 @@ def test_lever_valley_is_the_balanced_energy_of_the_lever():
     assert np.all(PE >= W * l - 1e-12)
 
 
+def test_every_figure_reads_its_numbers_from_the_design():
+    # the valley: every grid value is the energy of the lever built there
+    ax = S.lever_valley(10.0, 0.5, (0.1, 0.5), (0.2, 0.6), n=5)
+    A, B, PE = ax.valley
+    for idx in np.ndindex(A.shape):
+        d = bl.singh.lacoste_lever(10.0, 0.5, A[idx], B[idx])
+        np.testing.assert_allclose(d.potential_energy(np.linspace(-3, 3, 7)).total, PE[idx], rtol=1e-12)
+    # a family: the constants are the springs' and the loci the labels' positions
+    def factory(b_y):
+        return bl.singh.generalized_lever(10.0, 0.5, 0.2, 0.1, b_y)
+
+    values = [0.2, 0.3, 0.4]
+    ax1, _ = S.family_plot(factory, "b_y", values, q=[0.7])
+    designs = [factory(v) for v in values]
+    np.testing.assert_array_equal(ax1.family["constants"]["k"], [d.springs[0].k for d in designs])
+    for lab, pts in ax1.family["loci"].items():
+        np.testing.assert_array_equal(pts, [d.world_points([0.7], [d.labels[lab]])[0] for d in designs])
+    # cognates: the curve is the named point over the design's reachable range
+    d = bl.catalog()["fourbar_two_springs"]()
+    ax = S.cognates_plot([d], point=list(d.labels)[-1], n=50)
+    grid = F.range_grid(d, 50)
+    want = d.world_points(grid[d.reachable(grid)], [list(d.labels.values())[-1]])[:, 0, :]
+    np.testing.assert_array_equal(ax.curves[0], want)
+    # the energy curve and its marker
+    view = E.energy_plot(d, q=F.default_q(d)).energy
+    x, y = view.lines["total"].get_data()
+    ok = np.isfinite(y)
+    np.testing.assert_array_equal(x, np.degrees(view.grid[:, 0]))
+    np.testing.assert_array_equal(np.asarray(y)[ok], d.potential_energy(view.grid[ok]).total)
+    mx, my = view.marker.get_data()
+    assert my[0] == float(d.potential_energy(F.default_q(d)).total)
+
+
 def test_lever_valley_surface_and_bad_input():
-    ax = P.lever_valley(kind="surface", n=20)
+    ax = S.lever_valley(kind="surface", n=20)
     assert ax.name == "3d"
     with pytest.raises(ValueError, match="a_range must be increasing"):
-        P.lever_valley(a_range=(0.5, 0.1))
+        S.lever_valley(a_range=(0.5, 0.1))
     with pytest.raises(ValueError, match="kind"):
-        P.lever_valley(kind="bars")
+        S.lever_valley(kind="bars")
     with pytest.raises(ValueError, match="> 0"):
-        P.lever_valley(weight=-1.0)
+        S.lever_valley(weight=-1.0)
 
 
 def test_family_plot_of_designs():
     values = [0.0, 0.1, 0.2, 0.3, 0.4]  # 0 is invalid (a_x must be > 0)
-    ax1, ax2 = P.family_plot(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values,
+    ax1, ax2 = S.family_plot(lambda a_x: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), "a_x", values,
                              q=[0.4], points=["a"])
     fam = ax1.family
     np.testing.assert_allclose(fam["values"], values[1:])
@@ -344,7 +422,7 @@ def test_family_plot_with_springs_that_come_and_go():
             return d.replace(springs=[])  # a bare link: nothing named k
         return d
 
-    ax1, ax2 = P.family_plot(lambda n: factory(n), "n", [0, 1], q=[0.3])
+    ax1, ax2 = S.family_plot(lambda n: factory(n), "n", [0, 1], q=[0.3])
     k = ax1.family["constants"]["k"]
     assert np.isnan(k[0]) and k[1] == pytest.approx(2.0 * G * 0.5 / (0.3 * 0.2))
 
@@ -355,26 +433,26 @@ def test_family_plot_of_dicts_and_errors():
             raise ValueError("h must be > 0")
         return {"H": (h, 2 * h), "k_b": 3 * h, "k_t": 1 / h}
 
-    ax1, ax2 = P.family_plot(family, "h", [-1.0, 1.0, 2.0, 4.0])
+    ax1, ax2 = S.family_plot(family, "h", [-1.0, 1.0, 2.0, 4.0])
     np.testing.assert_allclose(ax1.family["loci"]["H"], [[1, 2], [2, 4], [4, 8]])
     np.testing.assert_allclose(ax1.family["constants"]["k_t"], [1.0, 0.5, 0.25])
     with pytest.raises(ValueError, match="failed for every value"):
-        P.family_plot(family, "h", [-1.0, 0.0])
+        S.family_plot(family, "h", [-1.0, 0.0])
     with pytest.raises(TypeError, match="callable"):
-        P.family_plot(3, "h", [1.0])
+        S.family_plot(3, "h", [1.0])
 
 
 def test_cognates_plot_traces_the_named_point():
     # two levers with different spring attachments carry the load on one and the same circle
     a = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
     b = bl.singh.lacoste_lever(10.0, 0.5, 0.4, 0.1)
-    ax = P.cognates_plot([a, b], point="p", n=91)
+    ax = S.cognates_plot([a, b], point="p", n=91)
     for curve in ax.curves:
         np.testing.assert_allclose(np.hypot(*curve.T), 0.5, rtol=1e-12)
     np.testing.assert_allclose(ax.curves[0], ax.curves[1], atol=1e-12)
     assert len(ax.patches) >= 4  # both mechanisms drawn
     with pytest.raises(ValueError, match="no point named 'E'"):
-        P.cognates_plot([a], point="E")
+        S.cognates_plot([a], point="E")
 
 
 def test_two_dof_residual_map_is_the_generalized_force():
@@ -382,20 +460,20 @@ def test_two_dof_residual_map_is_the_generalized_force():
     k = d.springs[0]
     d = d.replace(springs=[Spring(k.k * 1.2, 0.0, k.a, k.b, "k1"), *d.springs[1:]])
     fig, (ax1, ax2) = plt.subplots(1, 2)
-    ax = P.energy_plot(d, ax=ax1, residual=ax2, n=21)
+    ax = E.energy_plot(d, ax=ax1, residual=ax2, n=21)
     view = ax.energy
     R = np.asarray(view.residual_image.get_array()).ravel()
     want = np.max(np.abs(d.generalized_force(view.grid)), axis=-1) / view.report.scale
     np.testing.assert_allclose(R, want, rtol=1e-9)
     assert not view.report.balanced and view.note.get_text().startswith("not balanced")
     with pytest.raises(ValueError, match="residual="):
-        P.energy_plot(d, ax=ax1, residual=True)
+        E.energy_plot(d, ax=ax1, residual=True)
 
 
 def test_the_three_catalog_cognates_trace_one_coupler_curve():
     cat = bl.catalog()
     designs = [cat[f"deepak_cognate_{i}"]() for i in (1, 2, 3)]
-    ax = P.cognates_plot(designs, point="E", n=181)
+    ax = S.cognates_plot(designs, point="E", n=181)
     first = ax.curves[0]
     assert len(first) > 100
     for curve in ax.curves[1:]:  # driven by the same crank angle: the same points, in order

@@ -9,13 +9,16 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from balancelab import G
+from balancelab.core.elements import Pulley, Spring
+from balancelab.mechanisms.lever import LEVER_JOINTS
 from balancelab.methods import realize as rz
 from conftest import assert_exactly_balanced
 
 
 def test_pulley_lever_ideal_design_is_balanced():
     d = rz.pulley_lever(radius=0.01)
-    assert d.springs[0].realization == "pulley" and d.springs[0].is_zfl
+    assert d.springs[0].realization == Pulley(0.01, (0.0, 1.0), 1) and d.springs[0].is_zfl
+    assert d.springs[0].pulley is d.springs[0].realization
     assert_exactly_balanced(d)
     assert d.parameters["k"] == pytest.approx(2.0 * G * 0.5 / (0.3 * 0.2), rel=1e-14)
 
@@ -81,8 +84,65 @@ def test_pulley_bad_input():
         rz.pulley_string((0, 0), 0.1, 0.5)
     with pytest.raises(ValueError, match="turn"):
         rz.pulley_string((0, 0), 0.1, [0.5, 0.0], turn=0)
-    with pytest.raises(ValueError, match="realization='pulley'"):
+    with pytest.raises(ValueError, match="no spring is realized by a pulley"):
         rz.pulley_energy(rz.parallel_springs_lever(), [0.1])
+
+
+def test_pulley_energy_reads_the_springs_pulley():
+    """The exact model follows the Pulley carried by the spring: its radius, side and sense."""
+    d = rz.pulley_lever(radius=0.02)
+    q = np.linspace(-1.2, 1.2, 41)
+    s = d.springs[0]
+    C = d.world_points(q, [s.b])[:, 0, :]
+    load = d.replace(springs=[]).potential_energy(q).total
+    for pulley in (Pulley(0.02), Pulley(0.02, (1.0, 0.0), -1), Pulley(0.01, (-1.0, 1.0), 1)):
+        other = d.replace(springs=[Spring(s.k, 0.0, s.a, s.b, name="k", realization=pulley)])
+        lam = rz.pulley_string(s.a.point, pulley.radius, C, pulley.spring_direction, pulley.turn).passed_over
+        np.testing.assert_allclose(rz.pulley_energy(other, q), load + 0.5 * s.k * lam ** 2, rtol=1e-13)
+    # the string alias is an ideal pulley with the spring above it
+    alias = d.replace(springs=[Spring(s.k, 0.0, s.a, s.b, name="k", realization="pulley")])
+    assert alias.springs[0].pulley == Pulley(0.0, (0.0, 1.0), 1)
+    np.testing.assert_allclose(rz.pulley_energy(alias, q), d.potential_energy(q).total, rtol=1e-13)
+    # an explicit radius overrides every pulley's own
+    np.testing.assert_allclose(rz.pulley_energy(d, q, 0.0), d.potential_energy(q).total, rtol=1e-13)
+    assert rz.pulley_balance_error(d).radius == 0.02
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"radius": -0.01}, "pulley radius"),
+    ({"radius": float("nan")}, "pulley radius"),
+    ({"spring_direction": (0.0, 0.0)}, "spring_direction"),
+    ({"spring_direction": (1.0, 2.0, 3.0)}, "spring_direction"),
+    ({"turn": 0}, "turn"),
+    ({"turn": True}, "turn"),
+])
+def test_pulley_fields_are_checked(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        Pulley(**kwargs)
+
+
+def test_a_pulley_is_centred_on_the_ground():
+    with pytest.raises(ValueError, match="attachment a"):
+        Spring(10.0, 0.0, (1, (0.1, 0.0)), (0, (0.0, 0.3)), realization=Pulley(0.01))
+    with pytest.raises(ValueError, match="realization"):
+        Spring(10.0, 0.0, (0, (0.0, 0.3)), (1, (0.1, 0.0)), realization="rope")
+
+
+def test_realize_levers_are_the_one_lever_of_the_mechanisms():
+    for d in (rz.pulley_lever(), rz.parallel_springs_lever(), rz.approximate_lever()):
+        assert d.bodies == ("ground", "link") and d.q_names == ("theta",)
+        assert tuple(d.joints) == LEVER_JOINTS
+    assert rz.pulley_lever().q_range.tolist() == [[-math.pi / 2, math.pi / 2]]
+    assert rz.parallel_springs_lever().q_range.tolist() == [[-math.pi, math.pi]]
+
+
+def test_the_mass_sits_at_the_tip_of_a_link_of_that_length():
+    for build in (rz.pulley_lever, rz.parallel_springs_lever, rz.approximate_lever):
+        d = build(2.0, 0.4)
+        (load,) = d.loads
+        assert load.point == (0.4, 0.0) and load.force == (0.0, -2.0 * G)
+        with pytest.raises(ValueError, match="length"):
+            build(2.0, -0.4)
 
 
 def test_negative_free_length_in_parallel():

@@ -7,13 +7,15 @@ an ordinary one) and Sec. 2.3 / Fig. 20 (the pulley-and-string arrangement of th
 prototype).
 
 **String over a pulley.** An ordinary spring hangs from the ground; a string tied to
-its end comes down along a fixed line, wraps round a pulley of radius ``r`` centred at
+its end comes down along a fixed line, wraps round a pulley of radius ``rho`` centred at
 the virtual anchor and leaves it on the tangent towards the attachment ``C`` on the
-moving link. The string's passed-over length (from where it first touches the pulley
-to ``C``) is ``lambda = r phi + sqrt(d^2 - r^2)``, with ``d = |C - centre|`` and ``phi``
+moving link. The spring carries that geometry: ``Spring(..., realization=Pulley(rho,
+spring_direction, turn))`` (:class:`balancelab.core.elements.Pulley`), read both by the
+exact model here and by the drawing. The string's passed-over length (from where it
+first touches the pulley to ``C``) is ``lambda = rho phi + sqrt(d^2 - rho^2)``, with ``d = |C - centre|`` and ``phi``
 the wrap angle, which changes with the configuration. The spring's extension equals
 ``lambda`` when the arrangement is calibrated so that the passed-over length is zero
-at zero tension, and its energy is ``k/2 lambda^2``. As ``r -> 0``, ``lambda -> d`` and the
+at zero tension, and its energy is ``k/2 lambda^2``. As ``rho -> 0``, ``lambda -> d`` and the
 arrangement becomes the ideal ZFL spring; :func:`pulley_balance_error` measures how far
 a finite pulley is from it.
 """
@@ -25,10 +27,10 @@ from typing import NamedTuple
 import numpy as np
 
 from ..core.design import Design
-from ..core.elements import G, Joint, Load, Spring
+from ..core.elements import G, Load, Pulley, Spring
 from ..core.validation import finite_real, planar_point
+from ..mechanisms.lever import lever_design
 from .registry import register
-from ..mechanisms.base import TreeKinematics
 
 __all__ = [
     "PulleyString",
@@ -123,24 +125,26 @@ def pulley_string(center, radius: float, point, spring_direction=(0.0, 1.0), tur
     return PulleyString(tin, np.stack([t_out.real, t_out.imag], -1), wrap, free, passed)
 
 
-def pulley_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c: float = 0.2,
+def pulley_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: float = 0.2,
                  radius: float = 0.01) -> Design:
     """The lecture's single link balanced by a ZFL spring realized with a string over a pulley.
 
-    Link pivoted at the origin with ``mass`` at distance ``r``; the virtual ZFL spring
-    ``k = m g r / (b c)`` runs from ``B = (0, b)`` (the pulley's centre) to ``C``, at ``c``
-    along the link. The real spring hangs above the pulley and its string comes down on
-    the pulley's left side, wrapping counter-clockwise. The design's spring is the
-    ideal one (``realization="pulley"``, drawn as a pulley); the exact string model is
-    in :func:`pulley_energy` and :func:`pulley_balance_error`. Working range: the link
-    on the right of the pivot, ``theta`` in ``[-90 deg, 90 deg]``.
+    Link pivoted at the origin with ``mass`` at its tip, a distance ``length`` from the
+    pivot; the virtual ZFL spring ``k = m g r / (b c)`` (``r = length``) runs from
+    ``B = (0, b)`` (the pulley's centre) to ``C``, at ``c`` along the link. The real
+    spring hangs above the pulley and its string comes down on the pulley's left side,
+    wrapping counter-clockwise: the spring's realization is
+    ``Pulley(radius, spring_direction=(0, 1), turn=1)``. The design's energy is that of
+    the ideal spring; the exact string model is in :func:`pulley_energy` and
+    :func:`pulley_balance_error`. Working range: the link on the right of the pivot,
+    ``theta`` in ``[-90 deg, 90 deg]``.
 
     Parameters
     ----------
     mass : float
-        Mass (kg), > 0.
-    r : float
-        Its distance from the pivot (m), > 0.
+        Mass at the tip of the link (kg), > 0.
+    length : float
+        Length of the link: the distance of the mass from the pivot (m), > 0.
     b : float
         Height of the pulley's centre above the pivot (m), > ``c + radius``.
     c : float
@@ -151,17 +155,20 @@ def pulley_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c: float = 0
     Returns
     -------
     Design
-        ``parameters`` hold ``k``, the pulley geometry and ``balance_error`` (the
-        relative energy variation of the exact string model at this radius).
+        ``parameters`` hold ``k``, ``b``, ``c``, ``r`` (= ``length``), ``pulley_radius`` and
+        ``balance_error`` (the relative energy variation of the exact string model at
+        this radius).
 
     Examples
     --------
     >>> d = pulley_lever(radius=0.005)
     >>> d.balance_report().balanced, d.parameters["balance_error"] < 0.05
     (True, True)
+    >>> d.springs[0].pulley
+    Pulley(radius=0.005, spring_direction=(0.0, 1.0), turn=1)
     """
     mass = finite_real("mass (kg)", mass, positive=True)
-    r = finite_real("r (m)", r, positive=True)
+    r = finite_real("length (m)", length, positive=True)
     b = finite_real("b (m)", b, positive=True)
     c = finite_real("c (m)", c, positive=True)
     radius = finite_real("radius (m)", radius, nonnegative=True)
@@ -169,34 +176,33 @@ def pulley_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c: float = 0
         raise ValueError(f"the pulley must stay above the attachment: need b > c + radius "
                          f"({b} <= {c + radius})")
     k = mass * G * r / (b * c)
-    joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))]
-    kin = TreeKinematics(2, joints, [[0.0], [1.0]], ("theta",), ((-math.pi / 2, math.pi / 2),))
-    spring = Spring(k, 0.0, (0, (0.0, b)), (1, (c, 0.0)), name="k", realization="pulley")
-    d = Design("lever with a ZFL spring realized by a string over a pulley", ("ground", "link"), joints, kin,
-               [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], [spring],
-               labels={"A": (0, (0.0, 0.0)), "B": (0, (0.0, b)), "C": (1, (c, 0.0))},
-               parameters={"k": k, "b": b, "c": c, "r": r, "pulley_radius": radius,
-                           "spring_direction_x": 0.0, "spring_direction_y": 1.0, "turn": 1.0},
-               reference="Lecture 35 (string over a pulley); Deepak & Ananthasuresh 2012, Fig. 20")
+    pulley = Pulley(radius, spring_direction=(0.0, 1.0), turn=1)
+    spring = Spring(k, 0.0, (0, (0.0, b)), (1, (c, 0.0)), name="k", realization=pulley)
+    d = lever_design("lever with a ZFL spring realized by a string over a pulley",
+                     [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], [spring],
+                     q_range=(-math.pi / 2, math.pi / 2),
+                     labels={"A": (0, (0.0, 0.0)), "B": (0, (0.0, b)), "C": (1, (c, 0.0))},
+                     parameters={"k": k, "b": b, "c": c, "r": r, "pulley_radius": radius},
+                     reference="Lecture 35 (string over a pulley); Deepak & Ananthasuresh 2012, Fig. 20")
     return d.replace(parameters={**d.parameters, "balance_error": pulley_balance_error(d, radius).variation})
-    return d
 
 
-def _pulley_settings(design: Design, radius):
-    p = design.parameters
-    if radius is None:
-        radius = p.get("pulley_radius", 0.0)
-    sd = (p.get("spring_direction_x", 0.0), p.get("spring_direction_y", 1.0))
-    turn = int(p.get("turn", 1))
-    return finite_real("radius (m)", radius, nonnegative=True), sd, turn
+def _pulley_springs(design: Design) -> list:
+    pulleys = [s for s in design.springs if s.pulley is not None]
+    if not pulleys:
+        raise ValueError(f"{design.name}: no spring is realized by a pulley "
+                         "(realization=Pulley(...) or 'pulley')")
+    return pulleys
 
 
 def pulley_energy(design: Design, q, radius: float | None = None):
-    """Potential energy (J) with every ``realization="pulley"`` spring modelled exactly.
+    """Potential energy (J) with every spring realized by a pulley modelled exactly.
 
-    Each such spring must have its first attachment on the ground (the pulley's
-    centre). Its energy is ``k/2 lambda^2`` with the passed-over length ``lambda`` of
-    :func:`pulley_string`; everything else is as in ``design.potential_energy``.
+    Each such spring (``spring.pulley`` is a :class:`~balancelab.core.elements.Pulley`)
+    has its first attachment, the pulley's centre, on the ground. Its energy is
+    ``k/2 (lambda - free_length)^2`` with the passed-over length ``lambda`` of
+    :func:`pulley_string` for its pulley's radius, spring direction and sense of
+    wrapping; everything else is as in ``design.potential_energy``.
 
     Parameters
     ----------
@@ -204,7 +210,7 @@ def pulley_energy(design: Design, q, radius: float | None = None):
     q : array_like
         Configurations (rad).
     radius : float, optional
-        Pulley radius (m); by default ``design.parameters["pulley_radius"]``.
+        Pulley radius (m), >= 0, used for every pulley instead of its own.
 
     Returns
     -------
@@ -217,18 +223,17 @@ def pulley_energy(design: Design, q, radius: float | None = None):
     >>> bool(np.ptp(pulley_energy(d, np.linspace(-1, 1, 5))) < 1e-12)
     True
     """
-    radius, sd, turn = _pulley_settings(design, radius)
-    pulleys = [s for s in design.springs if s.realization == "pulley"]
-    if not pulleys:
-        raise ValueError(f"{design.name}: no spring has realization='pulley'")
-    others = [s for s in design.springs if s.realization != "pulley"]
+    pulleys = _pulley_springs(design)
+    if radius is not None:
+        radius = finite_real("radius (m)", radius, nonnegative=True)
+    others = [s for s in design.springs if s.pulley is None]
     base = design.replace(springs=others).potential_energy(q).total if (others or design.loads) else 0.0
     total = np.asarray(base, dtype=float)
     for s in pulleys:
-        if s.a.body != 0:
-            raise ValueError(f"pulley spring {s.name!r} must have its first attachment on the ground")
+        p = s.pulley
         C = design.world_points(q, [s.b])[..., 0, :]
-        lam = pulley_string(s.a.point, radius, C, sd, turn).passed_over
+        lam = pulley_string(s.a.point, p.radius if radius is None else radius, C, p.spring_direction,
+                            p.turn).passed_over
         total = total + 0.5 * s.k * (lam - s.free_length) ** 2
     return total
 
@@ -256,16 +261,17 @@ def pulley_balance_error(design: Design, radius: float | None = None, n: int = 2
     Parameters
     ----------
     design : Design
-        A one-dof design with a ``realization="pulley"`` spring (see :func:`pulley_lever`).
+        A one-dof design with a spring realized by a pulley (see :func:`pulley_lever`).
     radius : float, optional
-        Pulley radius (m), >= 0.
+        Pulley radius (m), >= 0; by default each pulley's own.
     n : int
         Number of configurations, >= 3.
 
     Returns
     -------
     PulleyError
-        Tends to zero as the radius tends to zero.
+        Tends to zero as the radius tends to zero. Its ``radius`` is ``radius``, or
+        the largest radius of the design's pulleys.
 
     Examples
     --------
@@ -282,7 +288,7 @@ def pulley_balance_error(design: Design, radius: float | None = None, n: int = 2
     V = pulley_energy(design, q, radius)
     scale = design.balance_report(q[:, None]).scale
     torque = np.gradient(V, q)
-    r, _, _ = _pulley_settings(design, radius)
+    r = float(radius) if radius is not None else max(s.pulley.radius for s in _pulley_springs(design))
     return PulleyError(r, float(np.ptp(V) / scale), float(np.max(np.abs(torque))), scale)
 
 
@@ -350,7 +356,7 @@ def negative_free_length_partner(k: float, free_length: float, k_partner: float)
     return -k * free_length / k_partner
 
 
-def parallel_springs_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c: float = 0.2,
+def parallel_springs_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: float = 0.2,
                            free_length: float = 0.05, share: float = 0.5) -> Design:
     """The single link balanced by an ordinary spring and a negative-free-length partner in parallel.
 
@@ -361,8 +367,10 @@ def parallel_springs_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c:
 
     Parameters
     ----------
-    mass, r, b, c : float
-        As in :func:`balancelab.lecture.single_link_spring` (kg, m), > 0.
+    mass, length, b, c : float
+        As in :func:`balancelab.lecture.single_link_spring`: the mass (kg) at the tip of
+        the link of length ``length`` (m), the anchor height ``b`` and the attachment
+        distance ``c`` (m), all > 0.
     free_length : float
         Free length of the ordinary spring (m), > 0.
     share : float
@@ -379,7 +387,7 @@ def parallel_springs_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c:
     (True, -0.05)
     """
     mass = finite_real("mass (kg)", mass, positive=True)
-    r = finite_real("r (m)", r, positive=True)
+    r = finite_real("length (m)", length, positive=True)
     b = finite_real("b (m)", b, positive=True)
     c = finite_real("c (m)", c, positive=True)
     free_length = finite_real("free_length (m)", free_length, positive=True)
@@ -389,15 +397,14 @@ def parallel_springs_lever(mass: float = 2.0, r: float = 0.5, b: float = 0.3, c:
     k = mass * G * r / (b * c)
     k1, k2 = share * k, (1 - share) * k
     l2 = negative_free_length_partner(k1, free_length, k2)
-    joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))]
-    kin = TreeKinematics(2, joints, [[0.0], [1.0]], ("theta",), ((-math.pi, math.pi),))
     springs = [Spring(k1, free_length, (0, (0.0, b)), (1, (c, 0.0)), name="k1"),
                Spring(k2, l2, (0, (0.0, b)), (1, (c, 0.0)), name="k2 (negative free length)")]
-    return Design("lever with an ordinary and a negative-free-length spring in parallel", ("ground", "link"),
-                  joints, kin, [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], springs,
-                  labels={"A": (0, (0.0, 0.0)), "B": (0, (0.0, b)), "C": (1, (c, 0.0))},
-                  parameters={"k": k, "k1": k1, "k2": k2, "free_length_1": free_length, "free_length_2": l2},
-                  reference="Deepak & Ananthasuresh 2012, Sec. 1.1; Lecture 35, k = m g r / (b c)")
+    return lever_design("lever with an ordinary and a negative-free-length spring in parallel",
+                        [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], springs,
+                        labels={"A": (0, (0.0, 0.0)), "B": (0, (0.0, b)), "C": (1, (c, 0.0))},
+                        parameters={"k": k, "k1": k1, "k2": k2, "free_length_1": free_length,
+                                    "free_length_2": l2},
+                        reference="Deepak & Ananthasuresh 2012, Sec. 1.1; Lecture 35, k = m g r / (b c)")
 
 
 # ---------------------------------------------------------- approximate balancing
@@ -424,7 +431,7 @@ def _lever_energy(x, mass, r, l0, th):
     return mass * G * r * s + 0.5 * k * (d - l0) ** 2
 
 
-def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi / 3, math.pi / 3),
+def approximate_lever(mass: float = 2.0, length: float = 0.5, theta_range=(-math.pi / 3, math.pi / 3),
                       free_length: float = 0.1, *, anchor_bounds=((-0.2, 0.2), (0.05, 0.3)),
                       attachment_bounds=((0.05, 0.3), (-0.05, 0.05)), k_bounds=(1.0, 5000.0),
                       realization: str = "coil", n: int = 181, maxiter: int = 500) -> Design:
@@ -437,14 +444,14 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
     ``n`` angles in ``theta_range`` (L-BFGS-B, started from the ZFL design with the same
     anchor height). ``parameters`` report the residual torque (N m) and the energy
     variation (J) over the range, next to the same numbers for the exact ZFL design
-    (``k = m g r / (b c)``), which are zero up to rounding.
+    (``k = m g r / (b c)`` with ``r = length``), which are zero up to rounding.
 
     Parameters
     ----------
     mass : float
-        Mass (kg), > 0.
-    r : float
-        Its distance from the pivot (m), > 0.
+        Mass at the tip of the link (kg), > 0.
+    length : float
+        Length of the link: the distance of the mass from the pivot (m), > 0.
     theta_range : (float, float)
         Working range of the link angle from the horizontal (rad), ``lo < hi``.
     free_length : float
@@ -479,11 +486,45 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
     >>> d.parameters["relative_residual_torque"] < 0.05
     True
     """
-    from scipy.optimize import minimize
-
     mass = finite_real("mass (kg)", mass, positive=True)
-    r = finite_real("r (m)", r, positive=True)
+    r = finite_real("length (m)", length, positive=True)
     l0 = finite_real("free_length (m)", free_length, positive=True)
+    lo, hi = _working_range(theta_range)
+    if realization not in ("coil", "gas"):
+        raise ValueError(f"realization must be 'coil' or 'gas', got {realization!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 10:
+        raise ValueError(f"n must be an integer >= 10, got {n!r}")
+    if isinstance(maxiter, bool) or not isinstance(maxiter, (int, np.integer)) or maxiter < 1:
+        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    bounds = _design_bounds(anchor_bounds, attachment_bounds, k_bounds)
+    th = np.linspace(lo, hi, n)
+    res = _optimize_spring(mass, r, l0, th, bounds, maxiter)
+    x = res.x
+    torque = _lever_torque(x, mass, r, l0, th)
+    energy = _lever_energy(x, mass, r, l0, th)
+    # the exact ZFL design with the optimizer's anchor height and attachment, for comparison
+    bz, cz = max(abs(x[1]), 1e-3), max(abs(x[2]), 1e-3)
+    xz = np.array([0.0, bz, cz, 0.0, mass * G * r / (bz * cz)])
+    tz = _lever_torque(xz, mass, r, 0.0, th)
+    ez = _lever_energy(xz, mass, r, 0.0, th)
+    bx, by, ax, ay, k = (float(v) for v in x)
+    spring = Spring(k, l0, (0, (bx, by)), (1, (ax, ay)), name="k", realization=realization)
+    return lever_design(f"lever, approximate balance with an ordinary {realization} spring",
+                        [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], [spring],
+                        q_range=(lo, hi),
+                        labels={"A": (0, (0.0, 0.0)), "b": (0, (bx, by)), "a": (1, (ax, ay))},
+                        parameters={"k": k, "free_length": l0, "b_x": bx, "b_y": by, "a_x": ax, "a_y": ay,
+                                    "residual_torque": float(np.max(np.abs(torque))),
+                                    "rms_residual_torque": float(np.sqrt(np.mean(torque ** 2))),
+                                    "relative_residual_torque": float(np.max(np.abs(torque)) / (mass * G * r)),
+                                    "energy_variation": float(np.ptp(energy)),
+                                    "zfl_residual_torque": float(np.max(np.abs(tz))),
+                                    "zfl_energy_variation": float(np.ptp(ez)),
+                                    "iterations": int(res.nit)},
+                        reference="Lecture 35 (approximate balancing with regular or gas springs)")
+
+
+def _working_range(theta_range) -> tuple[float, float]:
     try:
         lo, hi = (float(v) for v in theta_range)
     except (TypeError, ValueError):
@@ -492,12 +533,11 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
         raise ValueError(f"theta_range must be finite with lo < hi, got {theta_range!r}")
     if hi - lo > 2 * math.pi:
         raise ValueError("theta_range spans more than a full turn")
-    if realization not in ("coil", "gas"):
-        raise ValueError(f"realization must be 'coil' or 'gas', got {realization!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 10:
-        raise ValueError(f"n must be an integer >= 10, got {n!r}")
-    if isinstance(maxiter, bool) or not isinstance(maxiter, (int, np.integer)) or maxiter < 1:
-        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    return lo, hi
+
+
+def _design_bounds(anchor_bounds, attachment_bounds, k_bounds) -> list:
+    """Bounds on ``(b_x, b_y, a_x, a_y, k)``, checked."""
     bounds = []
     for name, pair in (("anchor_bounds", anchor_bounds), ("attachment_bounds", attachment_bounds)):
         for axis, bnd in zip("xy", pair):
@@ -509,7 +549,13 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
     if not 0 < klo < khi:
         raise ValueError(f"k_bounds must satisfy 0 < lower < upper, got {k_bounds!r}")
     bounds.append((klo, khi))
-    th = np.linspace(lo, hi, n)
+    return bounds
+
+
+def _optimize_spring(mass, r, l0, th, bounds, maxiter):
+    """L-BFGS-B on the mean square torque, from the ZFL design; ``res.x`` = ``(b_x, b_y, a_x, a_y, k)``."""
+    from scipy.optimize import minimize
+
     tscale = mass * G * r
 
     def clip(v, i):
@@ -527,6 +573,7 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
         t = _lever_torque(y * sc, mass, r, l0, th) / tscale
         return float(np.mean(t * t))
 
+    klo, khi = bounds[4]
     sbounds = bounds[:4] + [(klo / k0, khi / k0)]
     res = minimize(objective, x0 / sc, method="L-BFGS-B", bounds=sbounds,
                    options={"maxiter": int(maxiter), "ftol": 1e-12, "gtol": 1e-9})
@@ -536,30 +583,7 @@ def approximate_lever(mass: float = 2.0, r: float = 0.5, theta_range=(-math.pi /
         raise ApproximationError(
             f"approximate balancing did not converge: {res.message} (after {res.nit} iterations; best RMS "
             f"residual torque {rms:.4g} N m). Try a larger maxiter, wider bounds, or a narrower working range.")
-    x = res.x
-    torque = _lever_torque(x, mass, r, l0, th)
-    energy = _lever_energy(x, mass, r, l0, th)
-    # the exact ZFL design with the optimizer's anchor height and attachment, for comparison
-    bz, cz = max(abs(x[1]), 1e-3), max(abs(x[2]), 1e-3)
-    xz = np.array([0.0, bz, cz, 0.0, mass * G * r / (bz * cz)])
-    tz = _lever_torque(xz, mass, r, 0.0, th)
-    ez = _lever_energy(xz, mass, r, 0.0, th)
-    bx, by, ax, ay, k = (float(v) for v in x)
-    joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))]
-    kin = TreeKinematics(2, joints, [[0.0], [1.0]], ("theta",), ((lo, hi),))
-    spring = Spring(k, l0, (0, (bx, by)), (1, (ax, ay)), name="k", realization=realization)
-    return Design(f"lever, approximate balance with an ordinary {realization} spring", ("ground", "link"),
-                  joints, kin, [Load(1, (r, 0.0), (0.0, -mass * G), "m", kind="weight")], [spring],
-                  labels={"A": (0, (0.0, 0.0)), "b": (0, (bx, by)), "a": (1, (ax, ay))},
-                  parameters={"k": k, "free_length": l0, "b_x": bx, "b_y": by, "a_x": ax, "a_y": ay,
-                              "residual_torque": float(np.max(np.abs(torque))),
-                              "rms_residual_torque": float(np.sqrt(np.mean(torque ** 2))),
-                              "relative_residual_torque": float(np.max(np.abs(torque)) / tscale),
-                              "energy_variation": float(np.ptp(energy)),
-                              "zfl_residual_torque": float(np.max(np.abs(tz))),
-                              "zfl_energy_variation": float(np.ptp(ez)),
-                              "iterations": int(res.nit)},
-                  reference="Lecture 35 (approximate balancing with regular or gas springs)")
+    return res
 
 
 register("pulley_lever", "ZFL spring realized by a string over a 1 cm pulley (lecture 35)", pulley_lever,

@@ -1,20 +1,26 @@
 """Viz: pictures of a design: drawings, energy plots, design spaces, animations, explorers.
 
-What lives here: ``plotting`` (static figures: :func:`draw`, :func:`energy_plot`, the
-design-space and family views), ``animation`` (offline HTML animations) and
-``explorer`` (live ipywidgets explorers, imported on first use). No physics is computed
-here: geometry and energies come from the :class:`balancelab.Design` being drawn, so a
-picture cannot disagree with the numbers.
+What lives here: ``frame`` (the shared style, input checks, configuration grids and
+off-screen rendering), ``springs`` (how a coil, a gas spring or a string over a pulley
+is drawn), ``drawing`` (:func:`draw` and :class:`Drawing`), ``energy``
+(:func:`energy_plot` and :class:`EnergyView`), ``spaces`` (:func:`lever_valley`,
+:func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations)
+and ``explorer`` (live ipywidgets explorers, imported on first use). No physics is
+computed here: geometry and energies come from the :class:`balancelab.Design` being
+drawn (and a spring's realization from its ``realization``), so a picture cannot
+disagree with the numbers.
 
-A new figure goes in ``plotting`` (or a new module here) as a function that takes a
-``Design``. What it may import: ``core``, ``mechanisms``, ``methods`` (for the
-quantities a method defines), matplotlib; never ``course``.
+A new figure goes in a module here (a new one for a new kind of view) as a function
+that takes a ``Design``. What it may import: ``core``, ``mechanisms``, ``methods`` (for
+the quantities a method defines), matplotlib; never ``course``.
 """
 import importlib
 
 from .animation import animate, animate_parameter, configuration_path
-from .plotting import (Drawing, EnergyView, cognates_plot, default_q, draw, energy_plot,
-                       family_plot, lever_valley, report_summary)
+from .drawing import Drawing, draw
+from .energy import EnergyView, energy_plot, report_summary
+from .frame import default_q
+from .spaces import cognates_plot, family_plot, lever_valley
 
 __all__ = ["animate", "animate_parameter", "configuration_path", "Drawing", "EnergyView", "cognates_plot",
            "default_q", "draw", "energy_plot", "family_plot", "lever_valley", "report_summary", "explore",

@@ -20,8 +20,9 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from ..core.design import Design
-from .plotting import (Drawing, EnergyView, _check_design, _extent, _Geometry, default_q,
-                       energy_limits)
+from .drawing import Drawing, extent
+from .energy import EnergyView, energy_limits
+from .frame import Blitter, check_design, default_q
 
 __all__ = ["animate", "animate_parameter", "configuration_path"]
 
@@ -88,13 +89,11 @@ def _animation_class():
         _compact_saving = False
 
         def _render_frame(self) -> np.ndarray:
-            from .plotting import _Blitter
-
             if self.dynamic is None:
                 self._fig.canvas.draw()
                 return np.asarray(self._fig.canvas.buffer_rgba())[..., :3]
             if getattr(self, "_blitter", None) is None:
-                self._blitter = _Blitter(self._fig, self.dynamic)
+                self._blitter = Blitter(self._fig, self.dynamic)
             return self._blitter.render()
 
         def frame_image(self, i: int) -> np.ndarray:
@@ -218,7 +217,7 @@ def configuration_path(design: Design, frames: int = 60) -> np.ndarray:
     >>> configuration_path(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), 8).shape
     (8, 1)
     """
-    _check_design(design)
+    check_design(design)
     if isinstance(frames, bool) or not isinstance(frames, (int, np.integer)) or frames < 2:
         raise ValueError(f"frames must be an integer >= 2, got {frames!r}")
     lo, hi = design.q_range[:, 0], design.q_range[:, 1]
@@ -284,7 +283,7 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     >>> len(anim.path)
     12
     """
-    _check_design(design)
+    check_design(design)
     fps = _fps(fps)
     if path is None:
         path = configuration_path(design, frames)
@@ -392,86 +391,27 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     values = [float(v) for v in values]
     if not values:
         raise ValueError("values must hold at least one parameter value")
-    fixed = dict(fixed or {})
     unit_s = f" {unit}" if unit else ""
-    designs: list = []
-    qs: list = []
-    messages: list = []
-    for v in values:
-        head = f"{name} = {v:.4g}{unit_s}: "
-        try:
-            d = factory(**{**fixed, name: v})
-            _check_design(d)
-            qq = default_q(d) if q is None else np.asarray(q, dtype=float).reshape(-1)
-            d.poses(qq)
-        except (ValueError, ArithmeticError, RuntimeError) as exc:
-            designs.append(None)
-            qs.append(None)
-            messages.append(head + str(exc))
-            continue
-        designs.append(d)
-        qs.append(qq)
-        messages.append("")
+    designs, qs, messages = _sweep(factory, name, values, dict(fixed or {}), q, unit_s)
     valid = [i for i, d in enumerate(designs) if d is not None]
     if not valid:
         raise ValueError(f"no value of {name} gives a valid design; first error: {messages[0]}")
     first = designs[valid[0]]
-    dofs = {designs[i].dof for i in valid}
-    show_energy = len(dofs) == 1 and first.dof <= 2
+    show_energy = len({designs[i].dof for i in valid}) == 1 and first.dof <= 2
     fig, axes = _figure(figsize, dpi, 2 if show_energy else 1)
     ax = axes[0]
     drawing = Drawing(first, qs[valid[0]], ax, labels=labels, limits=False)
-    boxes = np.array([_extent(designs[i], _Geometry(designs[i]))[0] for i in valid])
-    box = np.array([boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max()])
-    pad = 0.05 * max(box[1] - box[0], box[3] - box[2]) + max(drawing._load_len or [0.0])
-    ax.set_xlim(box[0] - pad, box[1] + pad)
-    ax.set_ylim(box[2] - pad, box[3] + pad)
+    x0, x1, y0, y1 = drawing.padded(_union_box([designs[i] for i in valid]))
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
     ax.set_aspect("equal", adjustable="box")
     title = ax.set_title("", fontsize=9, y=1.0)
-    wrapped = [_wrap(m) for m in messages]
     note = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center", fontsize=8,
                    color="#D55E00", wrap=True,
                    bbox=dict(boxstyle="round", facecolor="white", edgecolor="#D55E00"))
-    energy = None
-    if show_energy:
-        energy = EnergyView(first, axes[1], q=qs[valid[0]], title=False)
-        energy.ax.set_title(" ", fontsize=9, y=1.0)
-        if first.dof == 1:
-            lows, highs = [], []
-            for i in valid:
-                e = energy.update(designs[i])
-                vals = np.concatenate([v[np.isfinite(v)] for v in (e.load, e.spring, e.total)])
-                lows.append(vals.min())
-                highs.append(vals.max())
-            scale = max((d.balance_report(n=200).scale for d in designs if d is not None), default=0.0)
-            energy.ylim = energy_limits(min(lows + [0.0]), max(highs + [0.0]), scale)
-            energy.update(first)
-    state = {"design": first}
-
-    def frame(i):
-        d = designs[i]
-        if d is None:
-            drawing.set_visible(False)
-            note.set_text(wrapped[i])
-            note.set_visible(True)
-            title.set_text(f"{name} = {values[i]:.4g}{unit_s}: no valid design")
-            if energy is not None:
-                energy.set_visible(False)
-                energy.ax.set_title("", fontsize=9, y=1.0)
-            return []
-        note.set_visible(False)
-        drawing.update(qs[i], d, rescale=False)
-        drawing.set_visible(True)
-        title.set_text(f"{d.name}, {name} = {values[i]:.4g}{unit_s}")
-        if energy is not None:
-            if d is not state["design"]:
-                energy.update(d)
-            energy.set_q(qs[i])
-            energy.set_visible(True)
-            energy.ax.set_title(_verdict(energy), fontsize=9, y=1.0)
-        state["design"] = d
-        return []
-
+    energy = _sweep_energy(designs, valid, axes[1], qs[valid[0]]) if show_energy else None
+    frame = _sweep_frames(designs, qs, [_wrap(m) for m in messages],
+                          [f"{name} = {v:.4g}{unit_s}" for v in values], drawing, energy, title, note)
     frame(0)
     _freeze_layout(fig)
     anim = _animation_class()(fig, frame, frames=len(values), interval=1000.0 / fps, blit=False,
@@ -491,6 +431,82 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     anim.energy = energy
     anim.fps = fps
     return anim
+
+
+def _sweep(factory: Callable, name: str, values: list, fixed: dict, q, unit_s: str):
+    """The design and configuration of every value, or ``None`` and the error message."""
+    designs: list = []
+    qs: list = []
+    messages: list = []
+    for v in values:
+        try:
+            d = check_design(factory(**{**fixed, name: v}))
+            qq = default_q(d) if q is None else np.asarray(q, dtype=float).reshape(-1)
+            d.poses(qq)
+        except (ValueError, ArithmeticError, RuntimeError) as exc:
+            designs.append(None)
+            qs.append(None)
+            messages.append(f"{name} = {v:.4g}{unit_s}: {exc}")
+            continue
+        designs.append(d)
+        qs.append(qq)
+        messages.append("")
+    return designs, qs, messages
+
+
+def _union_box(designs: list) -> np.ndarray:
+    """Bounding box ``[xmin, xmax, ymin, ymax]`` (m) of every design over its range."""
+    boxes = np.array([extent(d)[0] for d in designs])
+    return np.array([boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max()])
+
+
+def _sweep_energy(designs: list, valid: list, ax, q) -> EnergyView:
+    """The energy view of the first design, its axis fixed to hold every design's curves."""
+    first = designs[valid[0]]
+    energy = EnergyView(first, ax, q=q, title=False)
+    energy.ax.set_title(" ", fontsize=9, y=1.0)
+    if first.dof == 1:
+        lows, highs = [], []
+        for i in valid:
+            e = energy.update(designs[i])
+            vals = np.concatenate([v[np.isfinite(v)] for v in (e.load, e.spring, e.total)])
+            lows.append(vals.min())
+            highs.append(vals.max())
+        scale = max((d.balance_report(n=200).scale for d in designs if d is not None), default=0.0)
+        energy.ylim = energy_limits(min(lows + [0.0]), max(highs + [0.0]), scale)
+        energy.update(first)
+    return energy
+
+
+def _sweep_frames(designs, qs, notes, heads, drawing, energy, title, note) -> Callable:
+    """The frame function of a parameter sweep: frame ``i`` shows design ``i`` or its error."""
+    state = {"design": designs[next(i for i, d in enumerate(designs) if d is not None)]}
+
+    def frame(i):
+        d = designs[i]
+        if d is None:
+            drawing.set_visible(False)
+            note.set_text(notes[i])
+            note.set_visible(True)
+            title.set_text(heads[i] + ": no valid design")
+            if energy is not None:
+                energy.set_visible(False)
+                energy.ax.set_title("", fontsize=9, y=1.0)
+            return []
+        note.set_visible(False)
+        drawing.update(qs[i], d, rescale=False)
+        drawing.set_visible(True)
+        title.set_text(f"{d.name}, {heads[i]}")
+        if energy is not None:
+            if d is not state["design"]:
+                energy.update(d)
+            energy.set_q(qs[i])
+            energy.set_visible(True)
+            energy.ax.set_title(_verdict(energy), fontsize=9, y=1.0)
+        state["design"] = d
+        return []
+
+    return frame
 
 
 def _wrap(text: str, width: int = 36) -> str:

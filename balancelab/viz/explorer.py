@@ -27,8 +27,9 @@ from typing import Callable, Mapping
 import numpy as np
 
 from ..core.design import Design
-from .plotting import (Drawing, EnergyView, _Blitter, _check_design, _extent, default_q,
-                       report_summary)
+from .drawing import Drawing, extent
+from .energy import EnergyView, report_summary
+from .frame import Blitter, check_design, default_q
 
 __all__ = ["Explorer", "explore", "scaled_design_factory"]
 
@@ -62,7 +63,7 @@ def scaled_design_factory(design: Design):
     >>> round(f(stiffness=2.0).springs[0].k, 3)
     166.667
     """
-    _check_design(design)
+    check_design(design)
     if design.springs:
         def factory(stiffness: float = 1.0) -> Design:
             if not stiffness > 0:
@@ -327,9 +328,7 @@ class Explorer:
             if self.energy is not None:
                 clim = self.energy.image.get_clim() if self.energy.image is not None else None
                 xlim, ylim = self.energy.ax.get_xlim(), self.energy.ax.get_ylim()
-                self.energy.report = report
-                self.energy.design = design
-                self.energy._compute()
+                self.energy.update(design, report=report)
                 full |= self.energy.ax.get_xlim() != xlim
                 full |= self._fit_energy_limits(previous=ylim)
                 if clim is not None and self.energy.image.get_clim() != clim:
@@ -360,9 +359,7 @@ class Explorer:
     # ------------------------------------------------------------------ limits
     def _fit_mechanism_limits(self, design) -> bool:
         """Grow (or shrink a lot) the mechanism's limits to fit ``design``; True if changed."""
-        box, size = _extent(design, self.drawing.geom)
-        pad = 0.05 * size + max(self.drawing._load_len or [0.0])
-        want = np.array([box[0] - pad, box[1] + pad, box[2] - pad, box[3] + pad])
+        want = self.drawing.padded(extent(design, self.drawing.geom)[0])
         ax = self.drawing.ax
         cur = np.array([*ax.get_xlim(), *ax.get_ylim()])
         inside = want[0] >= cur[0] and want[1] <= cur[1] and want[2] >= cur[2] and want[3] <= cur[3]
@@ -400,7 +397,7 @@ class Explorer:
 
     def _render(self, full: bool = False) -> None:
         if self._blitter is None:
-            self._blitter = _Blitter(self.figure, self._dynamic)
+            self._blitter = Blitter(self.figure, self._dynamic)
         rgb = self._blitter.render(full=full)
         from PIL import Image
 
@@ -419,7 +416,7 @@ class Explorer:
                                             else "nothing stores energy as it moves")]
         for i, s in enumerate(self.design.springs):
             kind = "ZFL" if s.is_zfl else f"free length {s.free_length:.4g} m"
-            lines.append(f"{s.name or f'spring {i + 1}'}: k = {s.k:.6g} N/m ({kind}, {s.realization})")
+            lines.append(f"{s.name or f'spring {i + 1}'}: k = {s.k:.6g} N/m ({kind}, {s.pulley or s.realization})")
         for ld in self.design.loads:
             if ld.kind == "counterweight":
                 lines.append(f"{ld.name or 'counterweight'}: {ld.mass:.6g} kg")
@@ -563,7 +560,7 @@ def explore(factory, params: Mapping | None = None, q=True, *, fixed: Mapping | 
     --------
     >>> import balancelab as bl
     >>> ex = explore(bl.singh.lacoste_lever, {"a_x": (0.05, 0.5), "b_y": (0.05, 0.5)},
-    ...              fixed={"weight": 10.0, "l": 0.5})
+    ...              fixed={"weight": 10.0, "length": 0.5})
     >>> ex.set(a_x=0.25, theta=0.3)
     True
     >>> ex.report.balanced

@@ -1,0 +1,356 @@
+"""The energy of a design over its range: :func:`energy_plot` and its :class:`EnergyView`.
+
+One degree of freedom: the load, spring and total potential energy against the
+coordinate, the total flat for a balanced design. Two degrees of freedom: a map of the
+total energy's deviation from its mean, in units of the design's energy scale, and of
+the residual generalized force. Every number plotted is the design's own
+(:meth:`balancelab.Design.potential_energy`, :meth:`~balancelab.Design.generalized_force`,
+:meth:`~balancelab.Design.balance_report`). Layer: viz.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.design import Design
+from ..core.validation import finite_real
+from .frame import PALETTE, STYLE, check_design, count, new_axes, range_grid, tex_label
+
+__all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary"]
+
+
+def report_summary(report) -> str:
+    """One line for a title or a widget: the verdict and how far from balanced.
+
+    Parameters
+    ----------
+    report : BalanceReport
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> report_summary(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report())[:8]
+    'balanced'
+    """
+    if not all(hasattr(report, a) for a in ("balanced", "variation", "residual", "scale", "worst_q")):
+        raise TypeError(f"report must be a BalanceReport (design.balance_report()), got {type(report).__name__}")
+    if report.balanced:
+        return f"balanced (energy constant to {report.variation:.1e} of its scale)"
+    q = ", ".join(f"{np.degrees(v):.0f}°" for v in np.atleast_1d(report.worst_q))
+    return (f"NOT balanced: energy varies by {report.variation:.2g} of its scale; "
+            f"largest |dV/dq| = {report.residual * report.scale:.3g} J/rad at ({q})")
+
+
+def _safe_report(design: Design, n: int = 1000):
+    try:
+        return design.balance_report(n=n)
+    except (ValueError, RuntimeError):
+        return None
+
+
+def energy_limits(lo: float, hi: float, scale: float = 0.0) -> tuple[float, float]:
+    """y-limits (J) for energy curves spanning ``lo``..``hi``, never narrower than ``scale``.
+
+    A balanced design whose energies are all constant would otherwise zoom in on
+    round-off noise.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Smallest and largest energy shown (J).
+    scale : float
+        The design's energy scale (J), see :class:`balancelab.BalanceReport`.
+
+    Returns
+    -------
+    (float, float)
+
+    Examples
+    --------
+    >>> energy_limits(-1e-15, 1e-15, 40.0)
+    (-23.2, 23.2)
+    """
+    lo, hi = finite_real("lo (J)", lo), finite_real("hi (J)", hi)
+    scale = finite_real("scale (J)", scale, nonnegative=True)
+    if hi < lo:
+        raise ValueError(f"need lo <= hi, got lo = {lo}, hi = {hi}")
+    span = max(hi - lo, scale, 1e-12)
+    mid = 0.5 * (lo + hi)
+    lo, hi = min(lo, mid - span / 2), max(hi, mid + span / 2)
+    pad = 0.08 * (hi - lo)
+    return lo - pad, hi + pad
+
+
+class EnergyView:
+    """Energy curves (1 dof) or map (2 dof) of a design, updated in place.
+
+    Created by :func:`energy_plot` (available as ``ax.energy``).
+
+    Attributes
+    ----------
+    ax : matplotlib.axes.Axes
+    design : Design
+    report : BalanceReport or None
+    lines : dict of str to Line2D
+        ``"load"``, ``"spring"``, ``"total"`` (one degree of freedom).
+    image : AxesImage
+        Two degrees of freedom: the map of ``(total - mean) / scale`` (``mean`` and
+        ``scale`` attributes, J), coloured over [-0.5, 0.5] for every design so a
+        balanced design is one flat colour.
+    marker : Line2D
+        The current configuration.
+    note : Text
+        The balance verdict, and the residual when not balanced.
+    grid, total, load, spring : numpy.ndarray
+        The configurations (rad) and the design's energies there (J, NaN where
+        unreachable), exactly as plotted.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> view = EnergyView(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3), q=[0.5])
+    >>> view.report.balanced, view.grid.shape
+    (True, (241, 1))
+    """
+
+    def __init__(self, design: Design, ax=None, *, n: int | None = None, report=None,
+                 q=None, residual_ax=None, legend: bool = True, title: bool = True):
+        check_design(design)
+        if design.dof > 2:
+            raise ValueError(f"energy_plot draws 1 or 2 degrees of freedom; {design.name} has {design.dof}")
+        self.ax = new_axes(ax, figsize=(5.0, 3.4))
+        self.n = count("n", n) if n is not None else (241 if design.dof == 1 else 61)
+        self.residual_ax = residual_ax
+        self.show_title = title
+        #: fixed energy-axis limits (J) for one dof; ``None`` to fit each design
+        self.ylim: tuple | None = None
+        self.lines: dict = {}
+        self.image = None
+        self.residual_image = None
+        if design.dof == 1:
+            self._init_curves(design, legend)
+        else:
+            self._init_map(design, residual_ax)
+        self.note = self.ax.text(0.02, 0.03, "", transform=self.ax.transAxes, fontsize=8, va="bottom",
+                                 ha="left", color="black",
+                                 bbox=dict(boxstyle="round,pad=0.25", facecolor="white", alpha=0.8,
+                                           edgecolor="none"))
+        self.update(design, report=report, q=q)
+
+    def _init_curves(self, design: Design, legend: bool) -> None:
+        ax = self.ax
+        for key, label, colour, lw in (("load", "loads (gravity, forces)", STYLE["load"], 1.5),
+                                       ("spring", "springs", STYLE["zfl"], 1.5),
+                                       ("total", "total", STYLE["total"], 2.5)):
+            self.lines[key], = ax.plot([], [], color=colour, linewidth=lw, label=label)
+        self.worst, = ax.plot([], [], linestyle="none", marker="x", color=PALETTE["vermillion"],
+                              markersize=9, markeredgewidth=2)
+        self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
+                               markerfacecolor=PALETTE["yellow"], markersize=8, zorder=5)
+        ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
+        ax.set_ylabel("potential energy (J)")
+        if legend:
+            ax.legend(loc="best", fontsize=8, framealpha=0.85)
+
+    def _init_map(self, design: Design, residual_ax) -> None:
+        ax = self.ax
+        (x0, x1), (y0, y1) = np.degrees(design.q_range)
+        extent = (x0, x1, y0, y1)
+        self.image = ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto", cmap="cividis",
+                               extent=extent, interpolation="nearest")
+        self.colorbar = ax.figure.colorbar(self.image, ax=ax, label="(total − mean) / energy scale")
+        self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
+                               markerfacecolor=PALETTE["yellow"], markersize=8)
+        self.worst, = ax.plot([], [], linestyle="none", marker="x", color=PALETTE["vermillion"],
+                              markersize=9, markeredgewidth=2)
+        ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
+        ax.set_ylabel(f"{tex_label(design.q_names[1])} (deg)")
+        if residual_ax is not None:
+            self.residual_image = residual_ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto",
+                                                     cmap="magma", extent=extent, interpolation="nearest")
+            self.residual_colorbar = residual_ax.figure.colorbar(
+                self.residual_image, ax=residual_ax, label="|dV/dq| / scale (1/rad)")
+            residual_ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
+            residual_ax.set_ylabel(f"{tex_label(design.q_names[1])} (deg)")
+            residual_ax.set_title("residual generalized force", fontsize=10)
+
+    def update(self, design: Design | None = None, *, report=None, q=None) -> "EnergyView":
+        """Recompute the curves (or map) for ``design`` and move the marker to ``q``.
+
+        Parameters
+        ----------
+        design : Design, optional
+            New design (same number of coordinates); the current one by default.
+        report : BalanceReport, optional
+            Its balance report, if already computed.
+        q : array_like, optional
+            Configuration (rad) to mark.
+
+        Returns
+        -------
+        EnergyView
+        """
+        if design is not None:
+            check_design(design)
+            self.design = design
+            self.report = report if report is not None else _safe_report(design)
+            self._compute()
+        if q is not None:
+            self.set_q(q)
+        return self
+
+    def _compute(self) -> None:
+        """The design's energies over the range grid, then the curves or maps and the verdict."""
+        d = self.design
+        grid = range_grid(d, self.n if d.dof == 1 else self.n * self.n)
+        ok = d.reachable(grid)
+        total = np.full(len(grid), np.nan)
+        load = np.full(len(grid), np.nan)
+        spring = np.full(len(grid), np.nan)
+        if ok.any():
+            e = d.potential_energy(grid[ok])
+            total[ok], load[ok], spring[ok] = e.total, e.load, e.spring
+        self.grid, self.total, self.load, self.spring = grid, total, load, spring
+        if d.dof == 1:
+            self._show_curves()
+        else:
+            self._show_maps(ok)
+        self._show_verdict()
+
+    def _show_curves(self) -> None:
+        rep = self.report
+        x = np.degrees(self.grid[:, 0])
+        self.lines["load"].set_data(x, self.load)
+        self.lines["spring"].set_data(x, self.spring)
+        self.lines["total"].set_data(x, self.total)
+        vals = np.concatenate([v[np.isfinite(v)] for v in (self.load, self.spring, self.total)] + [[0.0]])
+        self.ax.set_xlim(x[0], x[-1])
+        self.ax.set_ylim(*(self.ylim or energy_limits(vals.min(), vals.max(),
+                                                      rep.scale if rep is not None else 0.0)))
+
+    def _show_maps(self, ok: np.ndarray) -> None:
+        d, rep, grid = self.design, self.report, self.grid
+        m = int(round(math.sqrt(len(grid))))
+        Z = self.total.reshape(m, m)
+        self.mean = float(np.nanmean(Z)) if np.isfinite(Z).any() else 0.0
+        self.scale = rep.scale if rep is not None else float(np.nanmax(np.abs(Z - self.mean)) or 1.0)
+        # deviation from the mean in units of the energy scale: one fixed colour range
+        # for every design, a single flat colour when balanced
+        self.image.set_data((Z - self.mean) / self.scale)
+        self.image.set_clim(-0.5, 0.5)
+        if self.residual_image is not None:
+            gf = np.full(len(grid), np.nan)
+            if ok.any():
+                gf[ok] = np.max(np.abs(d.generalized_force(grid[ok])), axis=-1)
+            scale = rep.scale if rep is not None else 1.0
+            R = (gf / scale).reshape(m, m)
+            self.residual_image.set_data(R)
+            top = float(np.nanmax(R)) if np.isfinite(R).any() else 1.0
+            self.residual_image.set_clim(0.0, max(top, 1e-12))
+
+    def _show_verdict(self) -> None:
+        d, rep = self.design, self.report
+        if rep is None:
+            self.note.set_text("nothing stores energy as this design moves")
+            self.worst.set_data([], [])
+        elif rep.balanced:
+            self.note.set_text(f"balanced: total constant to {rep.variation:.1e}\n"
+                               f"of the energy scale ({rep.scale:.3g} J)")
+            self.worst.set_data([], [])
+        else:
+            wq = np.atleast_1d(rep.worst_q)
+            self.note.set_text(f"not balanced: total varies by {rep.variation:.2g} of the scale\n"
+                               f"largest |dV/dq| = {rep.residual * rep.scale:.3g} J/rad (×)")
+            if d.dof == 1:
+                self.worst.set_data([np.degrees(wq[0])], [float(d.potential_energy(wq).total)])
+            else:
+                self.worst.set_data([np.degrees(wq[0])], [np.degrees(wq[1])])
+        if self.show_title:
+            self.ax.set_title(f"{d.name}: " + ("balanced" if rep is not None and rep.balanced else
+                                               "not balanced"), fontsize=10)
+
+    @property
+    def artists(self) -> list:
+        """The artists that change with the design or the configuration."""
+        arts = list(self.lines.values()) + [self.marker, self.worst, self.note]
+        return arts + [a for a in (self.image, self.residual_image) if a is not None]
+
+    def set_visible(self, visible: bool) -> None:
+        """Show or hide the curves, map, markers and note."""
+        for a in self.artists:
+            a.set_visible(visible)
+
+    def set_q(self, q) -> None:
+        """Move the marker to configuration ``q`` (rad)."""
+        q = np.asarray(q, dtype=float).reshape(-1)
+        if self.design.dof == 1:
+            v = float(self.design.potential_energy(q).total)
+            self.marker.set_data([np.degrees(q[0])], [v])
+        else:
+            self.marker.set_data([np.degrees(q[0])], [np.degrees(q[1])])
+
+
+def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residual: bool | None = None,
+                legend: bool = True):
+    """Load, spring and total potential energy over the configuration range.
+
+    One degree of freedom: three curves against the coordinate (in degrees), the
+    total flat for a balanced design; when it is not balanced the spread and the
+    largest residual ``|dV/dq|`` are written and the worst configuration marked.
+    Two degrees of freedom: a map of the total energy's deviation from its mean in
+    units of the design's energy scale (the sum of the spreads of every load and
+    spring energy), so a balanced design is one flat colour, and optionally a map of
+    the residual generalized force. The balance verdict is in the title.
+
+    Parameters
+    ----------
+    design : Design
+        A design with 1 or 2 coordinates.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on (a new figure by default).
+    q : array_like, optional
+        A configuration (rad) to mark.
+    n : int, optional
+        Points (an integer >= 2) along the range (1 dof, default 241) or per side of the map (2 dof,
+        default 61).
+    residual : bool or matplotlib.axes.Axes, optional
+        Two degrees of freedom only: draw the map of the residual generalized force
+        ``|dV/dq| / scale`` too, on a second Axes of a new figure (``True``, the default
+        when ``ax`` is not given) or on the Axes given.
+    legend : bool
+        Show the legend (1 dof).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The energy Axes; ``ax.energy`` is the :class:`EnergyView`.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> ax = energy_plot(bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3))
+    >>> ax.energy.report.balanced
+    True
+    """
+    check_design(design)
+    residual_ax = None
+    if design.dof == 2:
+        if residual is None:
+            residual = ax is None
+        if hasattr(residual, "imshow"):
+            residual_ax = residual
+        elif residual and ax is None:
+            import matplotlib.pyplot as plt
+
+            fig, (ax, residual_ax) = plt.subplots(1, 2, figsize=(9.5, 3.6), layout="constrained")
+        elif residual:
+            raise ValueError("with ax given, pass the Axes for the residual map as residual=")
+    view = EnergyView(design, ax, n=n, q=q, residual_ax=residual_ax, legend=legend)
+    view.ax.energy = view
+    return view.ax
+

@@ -1,0 +1,254 @@
+"""How a spring is drawn: a coil, a gas spring, or a string over a pulley to a coil.
+
+The shape follows the spring's ``realization``. A spring realized by a pulley
+(``spring.pulley``, a :class:`balancelab.core.elements.Pulley`) is drawn from the same
+object the exact string model reads (:func:`balancelab.methods.realize.pulley_string`):
+the string leaves the attachment on the tangent to the pulley, wraps round it in the
+pulley's sense and runs on to a coil on the pulley's ``spring_direction`` side, so the
+picture cannot put the spring where the model does not.
+
+Layer: viz; imports ``balancelab.core`` and ``balancelab.methods.realize``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..core.elements import Pulley, Spring
+from ..methods.realize import pulley_string
+from .frame import STYLE
+
+__all__ = ["coil_path", "gas_path", "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path",
+           "spring_style"]
+
+
+def coil_path(a, b, width: float, turns: int = 7, lead: float = 0.15):
+    """Polyline (x, y) of a zig-zag coil from ``a`` to ``b`` with straight leads.
+
+    Parameters
+    ----------
+    a, b : array_like, shape (2,)
+        End points (m).
+    width : float
+        Half-width of the zig-zag (m); at most 35 % of the length is used.
+    turns : int
+        Number of zig-zags.
+    lead : float
+        Fraction of the length taken by each straight lead.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        x and y (m), starting at ``a`` and ending at ``b``.
+
+    Examples
+    --------
+    >>> x, y = coil_path(np.array([0.0, 0.0]), np.array([1.0, 0.0]), 0.1, turns=2)
+    >>> x[[0, -1]].tolist(), float(np.abs(y).max())
+    ([0.0, 1.0], 0.1)
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    d = b - a
+    length = float(np.hypot(*d))
+    if length < 1e-12:
+        return np.array([a[0], b[0]]), np.array([a[1], b[1]])
+    u = d / length
+    n = np.array([-u[1], u[0]])
+    s = np.concatenate([[0.0], lead + (1 - 2 * lead) * np.linspace(0, 1, 2 * turns + 1), [1.0]])
+    w = np.zeros_like(s)
+    w[2:-2:2] = 1.0
+    w[3:-2:2] = -1.0
+    w = w * min(width, 0.35 * length)
+    pts = a[None, :] + s[:, None] * length * u[None, :] + w[:, None] * n[None, :]
+    return pts[:, 0], pts[:, 1]
+
+
+def gas_path(a, b, width: float):
+    """Polyline (x, y) of a gas spring from ``a`` to ``b``: a cylinder at ``a``, a rod to ``b``.
+
+    Parameters
+    ----------
+    a, b : array_like, shape (2,)
+        End points (m): the cylinder's base and the rod's end.
+    width : float
+        Half-width of the cylinder (m).
+
+    Returns
+    -------
+    (list, list)
+        x and y (m); a NaN separates the cylinder from the rod.
+
+    Examples
+    --------
+    >>> x, y = gas_path([0.0, 0.0], [1.0, 0.0], 0.1)
+    >>> x[-1], y[-1]
+    (1.0, 0.0)
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    m = a + 0.55 * (b - a)
+    u = b - a
+    nrm = np.array([-u[1], u[0]]) / max(float(np.hypot(*u)), 1e-12) * width
+    xs = [a[0] + nrm[0], m[0] + nrm[0], m[0] - nrm[0], a[0] - nrm[0], a[0] + nrm[0], np.nan, m[0], b[0]]
+    ys = [a[1] + nrm[1], m[1] + nrm[1], m[1] - nrm[1], a[1] - nrm[1], a[1] + nrm[1], np.nan, m[1], b[1]]
+    return [float(v) for v in xs], [float(v) for v in ys]
+
+
+def pulley_drawn_radius(pulley: Pulley, size: float) -> float:
+    """Radius (m) at which a pulley is drawn: its own, but at least 3 % of the picture's ``size``.
+
+    Parameters
+    ----------
+    pulley : Pulley
+    size : float
+        Size of the mechanism's picture (m).
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> pulley_drawn_radius(Pulley(0.05), 1.0), pulley_drawn_radius(Pulley(0.0), 1.0)
+    (0.05, 0.03)
+    """
+    return max(pulley.radius, 0.03 * float(size))
+
+
+def pulley_coil_length(passed_over, size: float):
+    """How far from the pulley (m) the drawn coil of a pulley spring ends.
+
+    The coil starts a quarter of the way out and lengthens with the passed-over length
+    of string (the spring's extension in the model).
+
+    Parameters
+    ----------
+    passed_over : float or array_like
+        Passed-over length of string (m).
+    size : float
+        Size of the mechanism's picture (m).
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Examples
+    --------
+    >>> round(float(pulley_coil_length(0.4, 1.0)), 3)
+    0.24
+    """
+    return 0.12 * size + 0.3 * np.asarray(passed_over, dtype=float)[()]
+
+
+def pulley_path(pulley: Pulley, centre, point, radius: float, size: float):
+    """Polyline (x, y) of a string from ``point`` over a pulley at ``centre`` to its spring.
+
+    The string leaves ``point`` on the tangent to the pulley (drawn with radius
+    ``radius``), wraps round it back to where it arrives from the spring, and runs along
+    ``pulley.spring_direction`` to a coil whose length grows with the passed-over length
+    of string. When ``point`` is inside the drawn pulley the string runs straight to the
+    centre.
+
+    Parameters
+    ----------
+    pulley : Pulley
+        The spring's realization (its side and sense of wrapping are used).
+    centre, point : array_like, shape (2,)
+        Pulley centre and the string's attachment on the moving link (m).
+    radius : float
+        Drawn radius (m), see :func:`pulley_drawn_radius`.
+    size : float
+        Size of the mechanism's picture (m), which scales the coil.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        x and y (m): ``point``, the tangent point where the string leaves the pulley,
+        the arc, then the coil.
+
+    Examples
+    --------
+    >>> x, y = pulley_path(Pulley(0.1), [0.0, 0.0], [0.0, -1.0], 0.1, 1.0)
+    >>> bool(y[-1] > 0.1)  # the coil is above the pulley, where the spring is
+    True
+    """
+    centre = np.asarray(centre, dtype=float)
+    point = np.asarray(point, dtype=float)
+    u = np.asarray(pulley.spring_direction, dtype=float)
+    u = u / float(np.hypot(*u))
+    try:
+        s = pulley_string(centre, radius, point, pulley.spring_direction, pulley.turn)
+        t_in, t_out, wrap, passed = s.tangent_in, s.tangent_out, float(s.wrap), float(s.passed_over)
+    except ValueError:  # the attachment is inside the drawn pulley
+        t_in = t_out = centre
+        wrap, passed, radius = 0.0, float(np.hypot(*(point - centre))), 0.0
+    psi_out = math.atan2(t_out[1] - centre[1], t_out[0] - centre[0])
+    psi = psi_out - pulley.turn * np.linspace(0.0, wrap, max(2, int(wrap / (math.pi / 16)) + 2))
+    arc_x, arc_y = centre[0] + radius * np.cos(psi), centre[1] + radius * np.sin(psi)
+    drop = pulley_coil_length(passed, size)
+    cx, cy = coil_path(t_in + 0.25 * drop * u, t_in + drop * u, 0.02 * size)
+    return np.concatenate([[point[0]], arc_x, cx]), np.concatenate([[point[1]], arc_y, cy])
+
+
+def spring_style(spring: Spring) -> tuple:
+    """Colour and line style of a spring: solid for ZFL, dashed for a free length, black string.
+
+    Parameters
+    ----------
+    spring : Spring
+
+    Returns
+    -------
+    (str, str or tuple)
+        A colour of :data:`~balancelab.viz.frame.STYLE` and a matplotlib line style.
+
+    Examples
+    --------
+    >>> spring_style(Spring(1.0, 0.0, (0, (0, 0)), (1, (1, 0))))
+    ('#D55E00', '-')
+    """
+    if spring.pulley is not None:
+        return STYLE["string"], "-"
+    if spring.is_zfl:
+        return STYLE["zfl"], "-"
+    return STYLE["spring"], (0, (3, 1.5))
+
+
+def spring_path(spring: Spring, pa, pb, size: float, pulley_radius: float | None = None):
+    """Polyline (x, y) of a spring whose attachments are at ``pa`` and ``pb`` (m).
+
+    A coil from ``pa`` to ``pb`` (more turns when longer), a gas spring, or, for a
+    spring realized by a pulley, :func:`pulley_path` from ``pb`` over the pulley
+    centred at ``pa``.
+
+    Parameters
+    ----------
+    spring : Spring
+    pa, pb : array_like, shape (2,)
+        World positions of the attachments ``a`` and ``b`` (m).
+    size : float
+        Size of the mechanism's picture (m).
+    pulley_radius : float, optional
+        Drawn pulley radius (m); :func:`pulley_drawn_radius` by default.
+
+    Returns
+    -------
+    (array_like, array_like)
+
+    Examples
+    --------
+    >>> s = Spring(1.0, 0.0, (0, (0, 0)), (1, (1, 0)))
+    >>> x, y = spring_path(s, [0.0, 0.0], [1.0, 0.0], 1.0)
+    >>> float(x[0]), float(x[-1])
+    (0.0, 1.0)
+    """
+    pa, pb = np.asarray(pa, dtype=float), np.asarray(pb, dtype=float)
+    pulley = spring.pulley
+    if pulley is not None:
+        radius = pulley_drawn_radius(pulley, size) if pulley_radius is None else pulley_radius
+        return pulley_path(pulley, pa, pb, radius, size)
+    if spring.realization == "gas":
+        return gas_path(pa, pb, 0.025 * size)
+    length = float(np.hypot(*(pb - pa)))
+    turns = int(np.clip(round(length / (0.035 * size)), 2, 8))
+    return coil_path(pa, pb, 0.025 * size, turns=turns)
