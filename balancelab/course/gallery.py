@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from .catalog import catalog
 
+__all__ = ["main"]
+
 
 def main() -> int:
     """Build every catalog entry, print its report; return 1 if any verdict is unexpected.

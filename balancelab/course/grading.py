@@ -57,6 +57,12 @@ class GradeRow:
         Task id -> points possible.
     notes : str
         Cells that failed or were interrupted, or what went wrong.
+
+    Examples
+    --------
+    >>> row = GradeRow("alice", "lab2", "graded", {"2.1": 1.0, "2.4": 0.0}, {"2.1": 1.0, "2.4": 2.0})
+    >>> row.total, row.max_total
+    (1.0, 3.0)
     """
 
     student: str
@@ -193,6 +199,17 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     Returns
     -------
     GradeRow
+
+    Examples
+    --------
+    A file that is not a notebook gets a clear row (no kernel is started for it):
+
+    >>> import pathlib, tempfile
+    >>> bad = pathlib.Path(tempfile.mkdtemp()) / "bob_lab2.ipynb"
+    >>> _ = bad.write_text("{not json")
+    >>> row = grade_notebook(bad)
+    >>> row.status, row.total, row.notes.split(":")[0]
+    ('malformed', 0.0, 'not a valid notebook')
     """
     path = Path(path)
     student = student or path.stem
@@ -238,6 +255,18 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
     Returns
     -------
     list of GradeRow
+
+    Raises
+    ------
+    FileNotFoundError
+        If ``folder`` is not a folder.
+
+    Examples
+    --------
+    >>> grade_folder("no/such/folder")
+    Traceback (most recent call last):
+    ...
+    FileNotFoundError: no such folder: no/such/folder
     """
     folder = Path(folder)
     if not folder.is_dir():
@@ -271,6 +300,14 @@ def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
     Returns
     -------
     Path
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})]
+    >>> path = write_csv(rows, pathlib.Path(tempfile.mkdtemp()) / "grades.csv")
+    >>> path.read_text().splitlines()
+    ['student,lab,status,total,max,2.1,notes', 'alice,lab2,graded,1,1,1,']
     """
     path = Path(path)
     cols = _task_columns(rows)
@@ -293,6 +330,14 @@ def summary(rows: list[GradeRow]) -> str:
     Returns
     -------
     str
+
+    Examples
+    --------
+    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}),
+    ...         GradeRow("bob", "", "malformed", notes="not a valid notebook")]
+    >>> print("\\n".join(summary(rows).splitlines()[-2:]))
+    2 notebooks, 1 graded, 1 with problems
+      bob: malformed: not a valid notebook
     """
     cols = _task_columns(rows)
     head = ["student", "lab", "status", "score"] + cols
@@ -309,8 +354,24 @@ def summary(rows: list[GradeRow]) -> str:
     return "\n".join(lines)
 
 
-def main(argv=None) -> int:
-    """Command line entry point (see the module docstring)."""
+def main(argv: list[str] | None = None) -> int:
+    """Command line entry point (see the module docstring).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (``sys.argv[1:]`` by default).
+
+    Returns
+    -------
+    int
+        The exit status: 0 when the folder was graded, 2 when it does not exist.
+
+    Examples
+    --------
+    >>> main(["no/such/folder"])  # prints "error: no such folder: ..." on stderr
+    2
+    """
     ap = argparse.ArgumentParser(prog="python -m balancelab.course.grading",
                                  description="Grade a folder of submitted balancelab lab notebooks.")
     ap.add_argument("folder", nargs="?", help="folder of submitted notebooks")

@@ -45,7 +45,17 @@ DEFAULT_STUDENT = _ROOT / "labs" / "student"
 
 
 class MarkerError(ValueError):
-    """A solution marker is missing its partner or nested."""
+    """A solution marker is missing its partner or nested.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("# BEGIN SOLUTION\\nk = 2")])
+    >>> student_version(nb, "lab9.ipynb")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    balancelab.course.labtools.MarkerError: lab9.ipynb: cell 0: '# BEGIN SOLUTION' is never closed by ...
+    """
 
 
 def _strip_code(src: str, where: str) -> tuple[str, list[str]]:
@@ -179,10 +189,21 @@ def solution_texts(nb, name: str = "notebook") -> list[str]:
     Parameters
     ----------
     nb : nbformat.NotebookNode
+        The solution notebook.
+    name : str
+        Name used in error messages.
 
     Returns
     -------
     list of str
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(
+    ...     "x = 1\\n# BEGIN SOLUTION\\nk = 2\\n# END SOLUTION")])
+    >>> solution_texts(nb)
+    ['k = 2\\n']
     """
     return [t for t in _split(nb, name)[1] if t.strip()]
 
@@ -199,6 +220,16 @@ def student_text(path: str | Path) -> str:
     -------
     str
         JSON text, as :func:`generate` writes it.
+
+    Examples
+    --------
+    >>> import nbformat, pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "lab9.ipynb"
+    >>> nbformat.write(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(
+    ...     "# BEGIN SOLUTION\\nk = 2\\n# END SOLUTION")]), path)
+    >>> text = student_text(path)
+    >>> "NotImplementedError" in text, "k = 2" in text
+    (True, False)
     """
     import nbformat
 
@@ -229,6 +260,15 @@ def generate(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUD
     -------
     list of Path
         The files written.
+
+    Examples
+    --------
+    >>> import nbformat, pathlib, tempfile
+    >>> root = pathlib.Path(tempfile.mkdtemp())
+    >>> (root / "solutions").mkdir()
+    >>> nbformat.write(nbformat.v4.new_notebook(), root / "solutions" / "lab9.ipynb")
+    >>> [p.name for p in generate(root / "solutions", root / "student")]
+    ['lab9.ipynb']
     """
     written = []
     Path(dst).mkdir(parents=True, exist_ok=True)
@@ -241,9 +281,26 @@ def generate(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUD
 def stale(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUDENT) -> list[Path]:
     """Student versions that differ from what :func:`generate` would write (or are missing).
 
+    Parameters
+    ----------
+    src, dst : str or Path
+        As in :func:`generate`.
+
     Returns
     -------
     list of Path
+
+    Examples
+    --------
+    >>> import nbformat, pathlib, tempfile
+    >>> root = pathlib.Path(tempfile.mkdtemp())
+    >>> (root / "solutions").mkdir()
+    >>> nbformat.write(nbformat.v4.new_notebook(), root / "solutions" / "lab9.ipynb")
+    >>> [p.name for p in stale(root / "solutions", root / "student")]
+    ['lab9.ipynb']
+    >>> _ = generate(root / "solutions", root / "student")
+    >>> stale(root / "solutions", root / "student")
+    []
     """
     return [d for s, d in _pairs(src, dst)
             if not d.exists() or d.read_text(encoding="utf-8") != student_text(s)]
@@ -270,6 +327,14 @@ def execute_notebook(path: str | Path, timeout: int = 120, kernel_name: str = "p
     -------
     nbformat.NotebookNode
         The executed notebook.
+
+    Examples
+    --------
+    >>> import nbformat, pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "lab9.ipynb"
+    >>> nbformat.write(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("print(6 * 7)")]), path)
+    >>> execute_notebook(path, write=False).cells[0].outputs[0].text
+    '42\\n'
     """
     import nbformat
     from nbclient import NotebookClient
@@ -291,8 +356,27 @@ def execute_notebook(path: str | Path, timeout: int = 120, kernel_name: str = "p
     return nb
 
 
-def main(argv=None) -> int:
-    """Command line: ``generate``, ``check`` or ``execute`` (see the module docstring)."""
+def main(argv: list[str] | None = None) -> int:
+    """Command line: ``generate``, ``check`` or ``execute`` (see the module docstring).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (``sys.argv[1:]`` by default).
+
+    Returns
+    -------
+    int
+        The exit status: 0 on success, 1 when ``check`` finds a stale student version, 2
+        on a marker error or a missing folder.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> empty = pathlib.Path(tempfile.mkdtemp())
+    >>> main(["check", "--solutions", str(empty)])  # prints "error: no solution notebooks ..." on stderr
+    2
+    """
     ap = argparse.ArgumentParser(prog="python -m balancelab.course.labtools",
                                  description="Generate student versions of the lab notebooks.")
     ap.add_argument("command", choices=("generate", "check", "execute"))

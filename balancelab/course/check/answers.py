@@ -1,0 +1,452 @@
+"""Reading and judging answers: the building blocks of every task's judge.
+
+Reading: :func:`quantity` (a number with an optional unit), :func:`vector`, :func:`point`
+and :func:`as_mapping` turn an answer into SI numbers or raise :class:`AnswerError` with a
+friendly message. Judging: :func:`numeric`, :func:`numeric_vector`, :func:`symbolic` and
+:func:`design_balanced` return ``(correct, message, hint)`` and never reveal the expected
+value.
+"""
+from __future__ import annotations
+
+import math
+import re
+from numbers import Real
+
+import numpy as np
+
+from ...core.design import Design, UnreachableConfiguration
+from ...core.elements import G
+from .core import AnswerError
+
+__all__ = ["quantity", "vector", "point", "numeric", "numeric_vector", "symbolic", "as_mapping",
+           "DESIGN_TOLERANCE", "design_balanced"]
+
+_UNITS = {
+    "length": ("m", {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "km": 1e3}),
+    "mass": ("kg", {"kg": 1.0, "g": 1e-3}),
+    "force": ("N", {"N": 1.0, "kN": 1e3, "mN": 1e-3}),
+    "stiffness": ("N/m", {"N/m": 1.0, "kN/m": 1e3, "N/mm": 1e3, "N/cm": 1e2}),
+    "energy": ("J", {"J": 1.0, "mJ": 1e-3, "kJ": 1e3, "Nm": 1.0, "N*m": 1.0, "N m": 1.0}),
+    "first moment": ("kg m", {"kg m": 1.0, "kg*m": 1.0, "kgm": 1.0, "g mm": 1e-6}),
+    "torque": ("N m", {"N m": 1.0, "Nm": 1.0, "N*m": 1.0, "N mm": 1e-3}),
+    "angle": ("rad", {"rad": 1.0, "deg": math.pi / 180, "°": math.pi / 180}),
+    "ratio": ("", {"": 1.0, "%": 1e-2}),
+}
+
+
+def _plain_number(x) -> float | None:
+    """A finite-or-not float if ``x`` is a plain real number, else None."""
+    if isinstance(x, bool):
+        return None
+    if isinstance(x, (Real, np.integer, np.floating)):
+        return float(x)
+    if isinstance(x, np.ndarray) and x.shape == () and np.issubdtype(x.dtype, np.number):
+        return float(x)
+    try:
+        import sympy as sp
+
+        if isinstance(x, sp.Basic) and x.is_number and x.is_real is not False:
+            return float(x)
+    except (TypeError, ValueError):
+        return None
+    return None
+
+
+def quantity(answer, dimension: str, what: str = "the answer") -> float:
+    """Turn an answer into a float in SI units, or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : float or str or (float, str)
+        A plain number in the SI unit of ``dimension``, a string ``"12.5 cm"`` or a pair
+        ``(12.5, "cm")``.
+    dimension : str
+        One of ``length, mass, force, stiffness, energy, first moment, torque, angle,
+        ratio``.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    float
+        The value in SI units.
+
+    Examples
+    --------
+    >>> quantity("12.5 cm", "length")
+    0.125
+    >>> quantity((2, "kN/m"), "stiffness")
+    2000.0
+    """
+    si, table = _UNITS[dimension]
+    example = f"a plain number in {si} or a string such as '2.5 {si}'" if si else "a plain number"
+    hint = f"Store {example}."
+    value, unit = None, None
+    if isinstance(answer, str):
+        m = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*", answer)
+        if not m:
+            raise AnswerError(f"{what.capitalize()} {answer!r} does not start with a number.", hint)
+        value, unit = float(m.group(1)), m.group(2)
+        if unit == "" and si:
+            raise AnswerError(f"{what.capitalize()} {answer!r} has no unit.",
+                              f"Write the unit, e.g. '{answer.strip()} {si}', or store a plain number in {si}.")
+    elif isinstance(answer, tuple) and len(answer) == 2 and isinstance(answer[1], str):
+        value, unit = _plain_number(answer[0]), answer[1].strip()
+        if value is None:
+            raise AnswerError(f"The first item of {what} should be a number, got {type(answer[0]).__name__}.",
+                              hint)
+    else:
+        value = _plain_number(answer)
+        if value is None:
+            kind = type(answer).__name__
+            if isinstance(answer, (list, tuple, np.ndarray)):
+                raise AnswerError(f"{what.capitalize()} should be one number, got a {kind} of "
+                                  f"{len(answer)} items.", hint)
+            raise AnswerError(f"{what.capitalize()} should be a number, got {kind}"
+                              f"{'' if answer is None else ' ' + _short(answer)}.", hint)
+        unit = si
+    if not math.isfinite(value):
+        raise AnswerError("The answer is NaN or infinite; give a finite number." if what == "the answer"
+                          else f"{what.capitalize()} is NaN or infinite; give a finite number.", hint)
+    if unit not in table:
+        known = ", ".join(repr(u) for u in table if u)
+        raise AnswerError(f"Unit {unit!r} is not a unit of {dimension} here.", f"Use one of {known}.")
+    return value * table[unit]
+
+
+def _short(x) -> str:
+    s = repr(x)
+    return s if len(s) <= 40 else s[:37] + "..."
+
+
+def vector(answer, n: int, dimension: str, what: str = "the answer") -> list[float]:
+    """Parse a tuple of ``n`` quantities (see :func:`quantity`), or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : sequence
+        ``n`` items, each a number in SI units or a string with a unit.
+    n : int
+        Number of items expected.
+    dimension : str
+        Dimension of every item.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    list of float
+
+    Examples
+    --------
+    >>> vector((1, "20 cm"), 2, "length")
+    [1.0, 0.2]
+    """
+    if isinstance(answer, (str, bytes, dict)) or not hasattr(answer, "__len__"):
+        raise AnswerError(f"{what.capitalize()} should be a tuple of {n} numbers, got {type(answer).__name__}.",
+                          f"Write it like ({', '.join(['...'] * n)}).")
+    items = list(np.asarray(answer, dtype=object).ravel()) if isinstance(answer, np.ndarray) else list(answer)
+    if len(items) != n:
+        raise AnswerError(f"{what.capitalize()} should have {n} items, got {len(items)}.",
+                          f"Write it like ({', '.join(['...'] * n)}).")
+    return [quantity(v, dimension, f"item {i + 1} of {what}") for i, v in enumerate(items)]
+
+
+def point(answer, what: str) -> np.ndarray:
+    """A planar point ``(x, y)`` in metres (strings with units allowed), or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : sequence of two
+        ``x`` and ``y``, each a number in metres or a string with a unit of length.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    numpy.ndarray, shape (2,)
+        In metres.
+
+    Examples
+    --------
+    >>> point(("10 cm", 0.2), "the anchor").tolist()
+    [0.1, 0.2]
+    """
+    return np.array(vector(answer, 2, "length", what))
+
+
+def _compare(value: float, expected: float, rtol: float, unit: str) -> tuple[bool, str, str]:
+    """Numeric verdict without revealing ``expected``."""
+    tol = f"{rtol * 100:g} %"
+    if expected != 0 and abs(value - expected) <= rtol * abs(expected):
+        return True, f"Within {tol} of the expected value.", ""
+    if expected == 0 and abs(value) <= rtol:
+        return True, f"Within {rtol:g} {unit} of the expected value.", ""
+    hint = ""
+    if expected != 0 and value != 0:
+        ratio = value / expected
+        for factor, why in ((G, "a factor g = 9.81 too large: did you use a mass where a weight (N) "
+                               "is needed, or multiply by g twice?"),
+                            (1 / G, "a factor g = 9.81 too small: did you forget g?"),
+                            (1e3, "a factor 1000 too large: check mm against m."),
+                            (1e-3, "a factor 1000 too small: check mm against m."),
+                            (2.0, "about twice too large: look for a stray factor 2."),
+                            (0.5, "about half of what it should be: look for a missing factor 2."),
+                            (-1.0, "the right size but the wrong sign.")):
+            if abs(ratio / factor - 1) < 0.02:
+                hint = "Your answer is " + why
+                break
+        if not hint:
+            hint = (f"Your answer is too {'large' if ratio > 1 else 'small'} "
+                    f"(outside the {tol} tolerance). Recheck each step and its units.")
+    return False, f"Not within {tol} of the expected value.", hint
+
+
+def numeric(answer, expected: float, dimension: str, rtol: float = 5e-3) -> tuple[bool, str, str]:
+    """Numeric check of one quantity (see :func:`quantity`) within relative tolerance ``rtol``.
+
+    Parameters
+    ----------
+    answer : float or str or (float, str)
+        The student's answer, as :func:`quantity` reads it.
+    expected : float
+        The right value, in the SI unit of ``dimension``; never shown in the messages.
+    dimension : str
+        As in :func:`quantity` (``"length"``, ``"stiffness"``, ...).
+    rtol : float
+        Accepted relative error (absolute, in SI units, when ``expected`` is 0).
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``; the hint names a common slip (a factor ``g``,
+        1000, 2 or a sign) when the ratio matches one.
+
+    Raises
+    ------
+    AnswerError
+        If the answer cannot be read as a quantity of that dimension.
+
+    Examples
+    --------
+    >>> numeric("25 cm", 0.25, "length")[0]
+    True
+    >>> numeric(250.0, 0.25, "length")[2]
+    'Your answer is a factor 1000 too large: check mm against m.'
+    """
+    value = quantity(answer, dimension)
+    return _compare(value, expected, rtol, _UNITS[dimension][0])
+
+
+def numeric_vector(answer, expected, dimension: str, rtol: float = 5e-3,
+                   names=None) -> tuple[bool, str, str]:
+    """Numeric check of a tuple of quantities, item by item (see :func:`numeric`).
+
+    Parameters
+    ----------
+    answer : sequence
+        The student's items, as :func:`vector` reads them.
+    expected : sequence of float
+        The right values (SI units).
+    dimension : str
+        Dimension of every item.
+    rtol : float
+        Accepted relative error of each item.
+    names : sequence of str, optional
+        How to name the items in messages (``"item 1"``, ... by default).
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``; the message names the items that are off.
+
+    Examples
+    --------
+    >>> numeric_vector((0.5, "2 kg"), (0.5, 2.0), "mass", names=("m_B", "m_C"))[0]
+    True
+    >>> numeric_vector((0.5, 3.0), (0.5, 2.0), "mass", names=("m_B", "m_C"))[1]
+    'm_C not within 0.5 %.'
+    """
+    values = vector(answer, len(expected), dimension)
+    names = names or [f"item {i + 1}" for i in range(len(expected))]
+    bad = []
+    hint = ""
+    for name, v, e in zip(names, values, expected):
+        ok, _, h = _compare(v, e, rtol, _UNITS[dimension][0])
+        if not ok:
+            bad.append(name)
+            hint = hint or f"{name}: {h}"
+    if not bad:
+        return True, f"All {len(values)} values within {rtol * 100:g} % of the expected ones.", ""
+    return False, f"{', '.join(bad)} not within {rtol * 100:g} %.", hint
+
+
+def symbolic(answer, expected, names: str, what: str = "the expression") -> tuple[bool, str, str]:
+    """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
+
+    Symbols are matched by name, whatever their assumptions. The difference must simplify
+    to zero; when ``simplify`` cannot decide, the two are compared at six seeded random
+    positive values of the symbols (relative 1e-9), which equivalent expressions always
+    pass.
+
+    Parameters
+    ----------
+    answer : sympy.Expr or str or number
+        The student's expression (a string is parsed with the allowed symbols).
+    expected : sympy.Expr
+        The right expression.
+    names : str
+        The allowed symbol names, separated by spaces.
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``.
+
+    Raises
+    ------
+    AnswerError
+        If the answer cannot be parsed, is an equation, or uses other symbols.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> m, r = sp.symbols("m r")
+    >>> symbolic("r*m/2", m * r / 2, "m r")[0], symbolic(m * r, m * r / 2, "m r")[0]
+    (True, False)
+    """
+    import sympy as sp
+
+    allowed = {n: sp.Symbol(n, positive=True) for n in names.split()}
+    hint = f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
+    if isinstance(answer, (str,)):
+        try:
+            expr = sp.sympify(answer, locals=dict(allowed))
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError):
+            raise AnswerError(f"{what.capitalize()} {answer!r} could not be read as a formula.", hint)
+    elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
+        expr = sp.sympify(answer)
+    else:
+        raise AnswerError(f"{what.capitalize()} should be a sympy expression, got {type(answer).__name__}.",
+                          hint)
+    if isinstance(expr, sp.Equality):
+        raise AnswerError(f"{what.capitalize()} is an equation; give the right-hand side only "
+                          "(an expression), e.g. the value of k.", hint)
+    if not isinstance(expr, sp.Expr):
+        raise AnswerError(f"{what.capitalize()} is not an algebraic expression.", hint)
+    extra = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)
+    if extra:
+        raise AnswerError(f"{what.capitalize()} uses symbols not in the problem: {', '.join(extra)}.", hint)
+    expr = expr.subs({s: allowed[str(s)] for s in expr.free_symbols})
+    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise AnswerError(f"{what.capitalize()} contains an infinity or NaN.", hint)
+    expected = sp.sympify(expected).subs({s: allowed[str(s)] for s in sp.sympify(expected).free_symbols})
+    diff = sp.simplify(expr - expected)
+    if diff == 0:
+        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
+    rng = np.random.default_rng(1)
+    syms = sorted(allowed.values(), key=str)
+    f_a = sp.lambdify(syms, expr, "numpy")
+    f_e = sp.lambdify(syms, expected, "numpy")
+    same = True
+    for _ in range(6):
+        vals = rng.uniform(0.3, 2.0, len(syms))
+        a, e = complex(f_a(*vals)), complex(f_e(*vals))
+        if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
+            same = False
+            break
+    if same:
+        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
+    return False, f"{what.capitalize()} is not equivalent to the expected one.", \
+        "Write the potential energy, collect the terms in sin and cos of the angle, and set " \
+        "each coefficient to zero."
+
+
+def as_mapping(answer, keys, what: str = "the design") -> dict:
+    """The answer itself if it is a dict holding every key, or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : object
+        The student's answer.
+    keys : sequence of str
+        Keys the dict must hold (others are ignored).
+    what : str
+        How to name the answer in messages.
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> as_mapping({"k": 300.0, "a": (0.3, 0.0)}, ("k", "a"))["k"]
+    300.0
+    >>> as_mapping({"k": 300.0}, ("k", "a"), "your spring")
+    Traceback (most recent call last):
+    ...
+    balancelab.course.check.core.AnswerError: Your spring is missing 'a'.
+    """
+    if not isinstance(answer, dict):
+        layout = ", ".join(repr(k) + ": ..." for k in keys)
+        raise AnswerError(f"{what.capitalize()} should be a dict with keys {', '.join(map(repr, keys))}, "
+                          f"got {type(answer).__name__}.", f"Write it like {{{layout}}}.")
+    missing = [k for k in keys if k not in answer]
+    if missing:
+        raise AnswerError(f"{what.capitalize()} is missing {', '.join(map(repr, missing))}.",
+                          f"Give all of {', '.join(map(repr, keys))}.")
+    return answer
+
+
+#: Relative tolerance on the energy variation used by design checks (numbers typed by hand
+#: with 4-5 significant digits balance to about 1e-4).
+DESIGN_TOLERANCE = 1e-3
+
+
+def design_balanced(design: Design, constraints: list[tuple[bool, str]],
+                    tolerance: float = DESIGN_TOLERANCE, n: int = 400) -> tuple[bool, str, str]:
+    """Verdict for a design task: balanced within ``tolerance`` and every constraint met.
+
+    Parameters
+    ----------
+    design : Design
+        The student's design, built by the check.
+    constraints : list of (bool, str)
+        ``(met, description)`` for each constraint of the task.
+    tolerance : float
+        Largest accepted energy variation relative to the energy scale.
+    n : int
+        Configurations examined.
+
+    Returns
+    -------
+    (bool, str, str)
+        ``(correct, message, hint)``.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.lecture.single_link_spring(mass=2.0, length=0.5, b=0.3, c=0.2)
+    >>> design_balanced(d, [(True, "k above 400 N/m")])[0]
+    True
+    >>> design_balanced(d, [(False, "k above 400 N/m")])[1]
+    'Your design is balanced (energy varies by less than 1e-9 of its scale); it violates: k above 400 N/m.'
+    """
+    try:
+        rep = design.balance_report(n=n, tolerance=tolerance)
+    except (UnreachableConfiguration, RuntimeError, ValueError) as e:
+        return False, f"Your design could not be evaluated: {e}", "Check the geometry."
+    failed = [text for ok, text in constraints if not ok]
+    spread = ("less than 1e-9" if rep.variation < 1e-9 else f"{rep.variation:.1e}")
+    bal = (f"balanced (energy varies by {spread} of its scale)" if rep.balanced
+           else f"NOT balanced: its energy varies by {rep.variation:.1e} of its scale "
+                f"(at most {tolerance:g} accepted)")
+    if rep.balanced and not failed:
+        return True, f"Your design is {bal} and meets every constraint.", ""
+    msg = f"Your design is {bal}"
+    msg += "." if not failed else f"; it violates: {'; '.join(failed)}."
+    hint = ("Keep 4-5 significant digits, and make the balance condition hold exactly."
+            if not rep.balanced else "Use the free choices to move the design inside the constraints.")
+    return False, msg, hint

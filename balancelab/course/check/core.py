@@ -1,0 +1,252 @@
+"""The core of the answer checks: verdicts and the task registry.
+
+:func:`register_task` is how a lab module (``lab1`` ... ``lab6``) declares a task and its
+judge; :func:`check` runs the judge on a student's answer and turns whatever happens
+(right, wrong, malformed, a crash) into a :class:`Verdict`. Reading and judging answers
+is :mod:`.answers`' job.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+__all__ = ["Verdict", "AnswerError", "Task", "register_task", "tasks", "lab_tasks", "explain", "check"]
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The outcome of one check.
+
+    Attributes
+    ----------
+    task : str
+        Task id, e.g. ``"2.1"``.
+    correct : bool
+        Whether the answer is accepted.
+    message : str
+        What was found (never the expected value).
+    hint : str
+        What to look at next (empty when correct).
+    score : float
+        Points earned (0 or the task's points).
+    points : float
+        Points the task is worth.
+
+    Examples
+    --------
+    >>> v = Verdict("2.1", False, "Not within 0.5 % of the expected value.", "Did you forget g?")
+    >>> bool(v), v.score
+    (False, 0.0)
+    """
+
+    task: str
+    correct: bool
+    message: str
+    hint: str = ""
+    score: float = 0.0
+    points: float = 1.0
+
+    def __bool__(self) -> bool:
+        return self.correct
+
+    def __str__(self) -> str:
+        head = "✔ correct" if self.correct else "✘ not yet"
+        text = f"Task {self.task}: {head}. {self.message}"
+        if self.hint and not self.correct:
+            text += f"\n  Hint: {self.hint}"
+        return text
+
+    __repr__ = __str__
+
+
+class AnswerError(ValueError):
+    """A malformed answer; its message is shown to the student as the verdict.
+
+    Parameters
+    ----------
+    message : str
+        What is wrong with the answer (shown as the verdict's message).
+    hint : str
+        How to write it instead (shown as the verdict's hint); the task's ``expects``
+        text when empty.
+
+    Examples
+    --------
+    >>> e = AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
+    >>> str(e), e.hint
+    ('k must be positive.', 'A spring rate is > 0 N/m.')
+    """
+
+    def __init__(self, message: str, hint: str = ""):
+        super().__init__(message)
+        self.hint = hint
+
+
+@dataclass(frozen=True)
+class Task:
+    """One task of a lab.
+
+    Attributes
+    ----------
+    id : str
+        ``"<lab>.<n>"``, e.g. ``"1.3"``.
+    lab : str
+        ``"lab1"`` ... ``"lab6"``.
+    title : str
+        One line saying what is asked.
+    variable : str
+        Name of the notebook variable holding the answer (what the grader reads).
+    kind : str
+        ``"numeric"``, ``"symbolic"`` or ``"design"``.
+    expects : str
+        What an answer looks like, with units and tolerance.
+    judge : callable
+        ``judge(answer) -> (correct, message, hint)``; may raise :class:`AnswerError`.
+    points : float
+        Points the task is worth.
+
+    Examples
+    --------
+    >>> t = tasks("lab2")[0]
+    >>> t.id, t.variable, t.kind
+    ('2.1', 'k_lamp', 'numeric')
+    """
+
+    id: str
+    lab: str
+    title: str
+    variable: str
+    kind: str
+    expects: str
+    judge: Callable[[Any], tuple[bool, str, str]] = field(repr=False, compare=False)
+    points: float = 1.0
+
+
+_TASKS: dict[str, Task] = {}
+
+
+def register_task(id: str, title: str, variable: str, kind: str, expects: str,
+                  points: float = 1.0) -> Callable:
+    """Decorator declaring a task: the decorated function is its judge.
+
+    A judge takes the student's answer and returns ``(correct, message, hint)`` (the
+    helpers of :mod:`.answers` build those) or raises :class:`AnswerError` for a malformed answer.
+
+    Parameters
+    ----------
+    id : str
+        ``"<lab>.<n>"``, e.g. ``"2.4"``; registering an id again replaces the task.
+    title, variable, kind, expects, points
+        As in :class:`Task`.
+
+    Returns
+    -------
+    callable
+        The decorator; it returns the judge unchanged.
+
+    Examples
+    --------
+    >>> @register_task("9.1", "the answer to everything", "x", "numeric", "the number 42")
+    ... def _judge(answer):
+    ...     return answer == 42, "Checked.", "Try 42."
+    >>> check("9.1", 42).correct, check("9.1", 41).hint
+    (True, 'Try 42.')
+    >>> _ = _TASKS.pop("9.1")
+    """
+    if kind not in ("numeric", "symbolic", "design"):
+        raise ValueError(f"kind must be 'numeric', 'symbolic' or 'design', got {kind!r}")
+
+    def register(fn):
+        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points)
+        return fn
+
+    return register
+
+
+def tasks(lab: str | int | None = None) -> list[Task]:
+    """The registered tasks, in order, optionally of one lab.
+
+    Parameters
+    ----------
+    lab : str or int, optional
+        ``"lab2"``, ``"2"`` or ``2``; all labs when omitted.
+
+    Returns
+    -------
+    list of Task
+
+    Examples
+    --------
+    >>> [t.id for t in tasks(2)][:2]
+    ['2.1', '2.2']
+    """
+    order = sorted(_TASKS.values(), key=lambda t: tuple(int(x) for x in t.id.split(".")))
+    if lab is None:
+        return order
+    key = str(lab)
+    key = key if key.startswith("lab") else "lab" + key
+    return [t for t in order if t.lab == key]
+
+
+lab_tasks = tasks
+
+
+def explain(task_id: str) -> str:
+    """What a task asks and what an answer looks like (units, tolerance).
+
+    Parameters
+    ----------
+    task_id : str
+        E.g. ``"2.1"``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> print(explain("1.1").splitlines()[0])
+    Task 1.1: distance of the counterweight from the pivot
+    """
+    t = _TASKS.get(str(task_id))
+    if t is None:
+        raise KeyError(f"no task {task_id!r}; tasks are {', '.join(t.id for t in tasks())}")
+    return f"Task {t.id}: {t.title}\n  store your answer in `{t.variable}`: {t.expects}"
+
+
+def check(task_id: str, answer: Any) -> Verdict:
+    """Check a student's answer to one task.
+
+    Parameters
+    ----------
+    task_id : str
+        The task, e.g. ``"2.1"`` (see :func:`tasks`).
+    answer : object
+        The answer in the form the task states (:func:`explain`).
+
+    Returns
+    -------
+    Verdict
+        Prints as a one-line verdict with a hint; ``bool(verdict)`` is whether it is right.
+        Never raises for a malformed answer.
+
+    Examples
+    --------
+    >>> check("2.1", "12 apples").correct
+    False
+    >>> print(check("1.1", float("nan")))
+    Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
+      Hint: Store a plain number in m or a string such as '2.5 m'.
+    """
+    t = _TASKS.get(str(task_id))
+    if t is None:
+        return Verdict(str(task_id), False, f"There is no task {task_id!r}.",
+                       f"Tasks are: {', '.join(t.id for t in tasks())}.", 0.0, 0.0)
+    try:
+        ok, message, hint = t.judge(answer)
+    except AnswerError as e:
+        ok, message, hint = False, str(e), e.hint or t.expects
+    except Exception as e:  # a check must never crash the student's notebook
+        ok, message, hint = (False, f"Your answer could not be checked ({type(e).__name__}).",
+                             t.expects)
+    return Verdict(t.id, bool(ok), message, hint, t.points if ok else 0.0, t.points)

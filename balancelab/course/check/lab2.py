@@ -1,0 +1,105 @@
+"""Lab 2, ZFL springs and levers: the lecture's lamp arm, Singh's levers, an open lever design."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...core.design import Design
+from ...core.elements import Load, Spring
+from ...mechanisms.lever import lever_design
+from ...methods.lecture import single_link_spring
+from ...methods.singh import lacoste_lever
+from .answers import as_mapping, design_balanced, numeric, point, quantity, symbolic
+from .core import AnswerError, register_task
+
+__all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "lab2_lever"]
+
+#: Task 2.1's lamp arm (kg, m): the lecture's single link with a ZFL spring.
+LAMP_SPRING = dict(mass=1.5, length=0.4, b=0.25, c=0.12)
+#: Task 2.3's LaCoste lever (N, m).
+LACOSTE = dict(weight=20.0, length=0.5, a_x=0.1, b_y=0.25)
+#: The lever of lab 2's design task: load ``weight`` (N) at ``length`` (m) and the limits
+#: (N/m, m).
+LAB2_LEVER = dict(weight=30.0, length=0.6, k_max=400.0, anchor_max=0.35, attach_max=0.6)
+
+
+def lab2_lever(k: float, a, b, *, W: float | None = None, l: float | None = None,
+               free_length: float = 0.0) -> Design:
+    """A lever with a load ``W`` at ``(l, 0)`` and one spring from ground point ``b`` to lever point ``a``.
+
+    Parameters
+    ----------
+    k : float
+        Spring rate (N/m), > 0.
+    a : (float, float)
+        Attachment on the lever, local frame (m).
+    b : (float, float)
+        Anchor on the ground (m).
+    W, l : float, optional
+        The load's weight (N) and its distance from the pivot (m); lab 2's design task
+        values by default. (The labs call them ``W`` and ``l``.)
+    free_length : float
+        Free length of the spring (m); 0 for a ZFL spring.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2)).balance_report().balanced
+    True
+    """
+    W = LAB2_LEVER["weight"] if W is None else W
+    l = LAB2_LEVER["length"] if l is None else l
+    return lever_design("lab 2 lever", [Load(1, (l, 0.0), (0.0, -W), "W")],
+                        [Spring(k, free_length, (0, tuple(b)), (1, tuple(a)), name="k")],
+                        labels={"O": (0, (0.0, 0.0)), "a": (1, tuple(a)), "b": (0, tuple(b))}, link="lever")
+
+
+@register_task("2.1", "spring rate that balances the lamp arm", "k_lamp", "numeric",
+               "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %")
+def _t21(answer):
+    return numeric(answer, single_link_spring(**LAMP_SPRING).parameters["k"], "stiffness")
+
+
+@register_task("2.2", "balance conditions of the generalized lever: (a_y, k)", "lever_conditions", "symbolic",
+               "a pair (a_y, k) of sympy expressions in W, l, a_x, b_x, b_y; any equivalent form accepted")
+def _t22(answer):
+    import sympy as sp
+
+    if isinstance(answer, dict):
+        answer = (answer.get("a_y"), answer.get("k"))
+    if isinstance(answer, (str, sp.Basic)) or not hasattr(answer, "__len__") or len(answer) != 2:
+        raise AnswerError("The answer should be a pair (a_y, k) of expressions.",
+                          "Write it like (a_y_expr, k_expr).")
+    W, l, ax, bx, by = sp.symbols("W l a_x b_x b_y", positive=True)
+    names = "W l a_x b_x b_y"
+    ok1, m1, h1 = symbolic(answer[0], -ax * bx / by, names, "your a_y")
+    ok2, m2, h2 = symbolic(answer[1], W * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k")
+    return ok1 and ok2, f"{m1} {m2}", h1 or h2
+
+
+@register_task("2.3", "constant potential energy of the balanced LaCoste lever", "lever_energy", "numeric",
+               "a number in J (energies measured from the pivot height, spring at zero length); "
+               "accepted within 0.5 %")
+def _t23(answer):
+    energy = lacoste_lever(**LACOSTE).potential_energy(np.zeros(1)).total
+    return numeric(answer, float(energy), "energy")
+
+
+@register_task("2.4", "a ZFL spring that balances the lever within the limits (open design)", "lever_spring",
+               "design", "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; "
+               "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 %", points=2)
+def _t24(answer):
+    a = as_mapping(answer, ("k", "a", "b"), "your spring")
+    p = LAB2_LEVER
+    k = quantity(a["k"], "stiffness", "k")
+    pa, pb = point(a["a"], "a"), point(a["b"], "b")
+    if k <= 0:
+        raise AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
+    cons = [(k <= p["k_max"] * (1 + 1e-12), f"k above {p['k_max']:g} N/m"),
+            (np.hypot(*pb) <= p["anchor_max"] + 1e-12,
+             f"anchor b farther than {p['anchor_max']} m from the pivot"),
+            (np.hypot(*pa) <= p["attach_max"] + 1e-12,
+             f"attachment a farther than {p['attach_max']} m from the pivot")]
+    return design_balanced(lab2_lever(k, tuple(pa), tuple(pb)), cons)

@@ -1,0 +1,107 @@
+"""Lab 3, building a ZFL spring: a string over a pulley, a negative free length, an ordinary spring."""
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from ...core.design import Design
+from ...core.elements import G
+from ...methods.realize import negative_free_length_partner, pulley_balance_error, pulley_lever
+from .answers import as_mapping, numeric, point, quantity
+from .core import AnswerError, register_task
+from .lab2 import lab2_lever
+
+__all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "lab3_torque_error"]
+
+#: Lab 3's lever (kg, m) and its limits: torque errors are fractions of ``m g r`` with
+#: ``r = length``; spring ends within ``reach_max`` (m) of the pivot in task 3.3.
+LAB3_LEVER = dict(mass=2.0, length=0.5, b=0.3, c=0.2, pulley_error=0.01, free_length=0.1,
+                  theta_range=(-math.pi / 3, math.pi / 3), torque_error=0.03, reach_max=0.4)
+#: Task 3.2: an ordinary spring (N/m, m) and the rate of its partner (N/m).
+PARTNER_SPRINGS = dict(k=400.0, free_length=0.05, k_partner=250.0)
+
+
+def lab3_torque_error(design: Design, theta_range=None, n: int = 241) -> float:
+    """Largest ``|dV/dtheta|`` of a one-link design over a range, divided by ``m g r`` of lab 3's lever.
+
+    Parameters
+    ----------
+    design : Design
+        A lever (one degree of freedom).
+    theta_range : (float, float), optional
+        Range of the link angle (rad); lab 3's working range (+-60 deg) by default.
+    n : int
+        Number of angles.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> lab3_torque_error(lab2_lever(2 * G * 0.5 / (0.3 * 0.2), (0.2, 0.0), (0.0, 0.3), W=2 * G, l=0.5)) < 1e-9
+    True
+    """
+    p = LAB3_LEVER
+    lo, hi = p["theta_range"] if theta_range is None else theta_range
+    q = np.linspace(lo, hi, n)
+    torque = design.generalized_force(q)[..., 0]
+    return float(np.max(np.abs(torque)) / (p["mass"] * G * p["length"]))
+
+
+@functools.lru_cache(maxsize=1)
+def _pulley_radius_limit() -> float:
+    """Pulley radius (m) at which lab 3's lever has its largest allowed torque error (1 % of ``m g r``).
+
+    Private: it is task 3.1's answer. Computed once with scipy's ``brentq`` on the exact
+    string model (:func:`balancelab.methods.realize.pulley_balance_error`).
+    """
+    from scipy.optimize import brentq
+
+    p = LAB3_LEVER
+    scale = p["mass"] * G * p["length"]
+
+    def excess(radius):
+        lever = pulley_lever(mass=p["mass"], length=p["length"], b=p["b"], c=p["c"], radius=radius)
+        return pulley_balance_error(lever).residual_torque / scale - p["pulley_error"]
+
+    return brentq(excess, 1e-5, 0.05, xtol=1e-8)
+
+
+@register_task("3.1", "largest pulley radius for a 1 % torque error", "pulley_radius", "numeric",
+               "a number in metres (or a string like '2.8 mm'); accepted within 2 %")
+def _t31(answer):
+    return numeric(answer, _pulley_radius_limit(), "length", rtol=0.02)
+
+
+@register_task("3.2", "free length of the partner spring that makes a ZFL pair", "partner_free_length",
+               "numeric", "a number in metres (negative!); accepted within 0.5 %")
+def _t32(answer):
+    return numeric(answer, negative_free_length_partner(**PARTNER_SPRINGS), "length")
+
+
+@register_task("3.3", "an ordinary spring that balances the lever within 3 % over +-60 deg (open design)",
+               "ordinary_spring", "design",
+               "a dict {'k': N/m, 'a': (x, y) on the link, 'b': (x, y) on the ground} for a spring of free "
+               "length 0.1 m; largest torque error over -60..60 deg at most 3 % of m g r; |a|, |b| <= 0.4 m",
+               points=2)
+def _t33(answer):
+    a = as_mapping(answer, ("k", "a", "b"), "your spring")
+    p = LAB3_LEVER
+    k = quantity(a["k"], "stiffness", "k")
+    pa, pb = point(a["a"], "a"), point(a["b"], "b")
+    if k <= 0:
+        raise AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
+    d = lab2_lever(k, tuple(pa), tuple(pb), W=p["mass"] * G, l=p["length"], free_length=p["free_length"])
+    err = lab3_torque_error(d)
+    fits = np.hypot(*pa) <= p["reach_max"] + 1e-12 and np.hypot(*pb) <= p["reach_max"] + 1e-12
+    ok = err <= p["torque_error"] and fits
+    msg = f"Largest torque error over the range: {100 * err:.2g} % of m g r"
+    msg += (" (at most 3 % accepted)" if err > p["torque_error"] else "")
+    if not fits:
+        msg += "; a spring end is farther than 0.4 m from the pivot"
+    hint = "" if ok else ("Start from the ZFL design and move the anchor and the rate to absorb the "
+                          "free length; plot the torque over the range.")
+    return ok, msg + ".", hint

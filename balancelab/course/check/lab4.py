@@ -1,0 +1,111 @@
+"""Lab 4, serial 2R arms: the lecture's parallelogram arm, Singh's minimum-preload 2R, Lustig's method."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...core.design import Design
+from ...methods.lecture import serial_2r_parallelogram
+from ...methods.lustig import lustig_values
+from ...methods.singh import serial_2r_min_preload
+from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, vector
+from .core import AnswerError, register_task
+
+__all__ = ["LAB4_PARALLELOGRAM", "LAB4_SINGH", "lab4_singh_arm"]
+
+#: The 2R arm of lab 4's parallelogram task (kg, m), as :func:`serial_2r_parallelogram` takes it.
+LAB4_PARALLELOGRAM = dict(masses=(1.2, 0.8), length=0.45, coms=((0.2, 0.0), (0.3, 0.0)),
+                          b=(0.15, 0.12), c=(0.1, 0.1))
+#: Singh & Ananthasuresh's 2R (N, m) and the limits of lab 4's design task (N/m, m).
+LAB4_SINGH = dict(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), length=1.5, k_max=9.0, anchor_max=3.2)
+
+
+def lab4_singh_arm(a_x=None) -> Design:
+    """Singh's 2R of lab 4 balanced with minimum preload, for the free choices ``a_x``.
+
+    Parameters
+    ----------
+    a_x : (float, float, float), optional
+        ``(a_x1, a_x2, a_x3)`` (m); those of :func:`~balancelab.methods.singh.serial_2r_min_preload`
+        by default.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab4_singh_arm((1.6, 1.6, -1.6)).balance_report().balanced
+    True
+    """
+    s = LAB4_SINGH
+    extra = {} if a_x is None else {"a_x": tuple(a_x)}
+    return serial_2r_min_preload(weights=s["weights"], coms=s["coms"], length=s["length"], **extra)
+
+
+@register_task("4.1", "spring rates (k1, k2) of the parallelogram 2R arm", "k_parallelogram", "numeric",
+               "a pair (k1, k2) in N/m; each accepted within 0.5 %")
+def _t41(answer):
+    p = serial_2r_parallelogram(**LAB4_PARALLELOGRAM).parameters
+    return numeric_vector(answer, (p["k1"], p["k2"]), "stiffness", names=("k1", "k2"))
+
+
+@register_task("4.2", "least possible constant energy of any balanced version of Singh's 2R", "pe_min_2r",
+               "numeric", "a number in J (loads' energy measured from the base pivot's height); within 0.5 %")
+def _t42(answer):
+    return numeric(answer, lab4_singh_arm().parameters["PE_min"], "energy")
+
+
+def _same_loads(design: Design, ref: Design) -> bool:
+    """Whether ``design`` carries the loads of ``ref`` on the same moving links."""
+    key = lambda L: sorted((ld.body, round(ld.point[0], 9), round(ld.point[1], 9),  # noqa: E731
+                            round(ld.force[0], 9), round(ld.force[1], 9)) for ld in L)
+    if key(design.loads) != key(ref.loads) or design.dof != ref.dof:
+        return False
+    q = ref.sample(20)
+    try:
+        return bool(np.allclose(design.poses(q), ref.poses(q), atol=1e-9))
+    except Exception:
+        return False
+
+
+def _student_arm(answer) -> Design:
+    """Task 4.3's design: the student's Design, or the arm built from their free choices."""
+    if isinstance(answer, Design):
+        if not _same_loads(answer, lab4_singh_arm()):
+            raise AnswerError("Your design does not carry the loads of Singh's 2R (W1 = 10 N at (1, 0.5) m, "
+                              "W2 = 20 N at 2 m, l = 1.5 m) on the same two links.",
+                              "Build it from serial_2r_min_preload(weights=(10, 20), coms=((1.0, 0.5), "
+                              "(2.0, 0.0)), length=1.5, a_x=...).")
+        return answer
+    a = as_mapping(answer, ("a_x",), "your choice")
+    ax = vector(a["a_x"], 3, "length", "a_x")
+    try:
+        return lab4_singh_arm(ax)
+    except (ValueError, TypeError) as e:
+        raise AnswerError(f"These free choices give no design: {e}", "Pick other values of a_x.")
+
+
+@register_task("4.3", "minimum-preload 2R whose springs are soft and anchored close (open design)", "arm_design",
+               "design", "a balancelab Design of Singh's 2R (or a dict {'a_x': (a_x1, a_x2, a_x3)} for "
+               "serial_2r_min_preload); minimum preload (energy within 0.1 % of the least possible), every "
+               "spring at most 9 N/m, every ground anchor within 3.2 m of the base pivot; balanced to 0.1 %",
+               points=2)
+def _t43(answer):
+    s = LAB4_SINGH
+    d = _student_arm(answer)
+    rep = d.balance_report(n=400, tolerance=DESIGN_TOLERANCE)
+    pe_min = lab4_singh_arm().parameters["PE_min"]
+    anchors = [at.point for sp_ in d.springs for at in (sp_.a, sp_.b) if at.body == 0]
+    cons = [(all(sp_.k <= s["k_max"] * (1 + 1e-9) for sp_ in d.springs),
+             f"a spring stiffer than {s['k_max']:g} N/m"),
+            (all(np.hypot(*p) <= s["anchor_max"] + 1e-9 for p in anchors),
+             f"a ground anchor farther than {s['anchor_max']:g} m from the base pivot"),
+            (rep.energy <= pe_min * (1 + DESIGN_TOLERANCE) + 1e-12,
+             "more preload than necessary (its constant energy is above the least possible)")]
+    return design_balanced(d, cons)
+
+
+@register_task("4.4", "spring rate k1 of Lustig et al.'s case 1 by the stiffness-matrix method", "k1_lustig",
+               "numeric", "a number in N/m; accepted within 0.5 %")
+def _t44(answer):
+    return numeric(answer, lustig_values(1)["k1"], "stiffness")

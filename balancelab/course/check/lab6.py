@@ -1,0 +1,78 @@
+"""Lab 6, scissors and Peaucellier-Lipkin: Singh's projector lift and writing board."""
+from __future__ import annotations
+
+from ...core.design import Design
+from ...core.elements import Spring
+from ...methods.singh import peaucellier_board, scissors_lift
+from .answers import as_mapping, design_balanced, numeric, quantity
+from .core import AnswerError, register_task
+
+__all__ = ["LAB6_SCISSORS", "LAB6_BOARD", "lab6_scissors"]
+
+#: Lab 6's projector lift (m, kg) and the limits of its design task (N/m, m).
+LAB6_SCISSORS = dict(length=0.5, payload_mass=8.0, k_max=600.0, l10_max=0.45)
+#: Task 6.2's Peaucellier-Lipkin board: the crank spring's attachment (m).
+LAB6_BOARD = dict(a_x=0.25)
+
+
+def lab6_scissors(free_length: float, k1: float | None = None, k2: float | None = None) -> Design:
+    """Lab 6's projector lift with spring 1 of free length ``l10``, optionally with given rates.
+
+    Parameters
+    ----------
+    free_length : float
+        Free length ``l10`` of spring 1 (m), > 0.
+    k1, k2 : float, optional
+        Spring rates (N/m); by default those that balance the lift (Singh eqs 52-59).
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab6_scissors(0.42).balance_report().balanced
+    True
+    """
+    p = LAB6_SCISSORS
+    d = scissors_lift(length=p["length"], payload_mass=p["payload_mass"], free_length=free_length)
+    if k1 is None and k2 is None:
+        return d
+    s1, s2 = d.springs
+    k1 = s1.k if k1 is None else k1
+    k2 = s2.k if k2 is None else k2
+    return d.replace(springs=[Spring(k1, s1.free_length, s1.a, s1.b, name=s1.name),
+                              Spring(k2, s2.free_length, s2.a, s2.b, name=s2.name)])
+
+
+@register_task("6.1", "spring rate k1 of the projector lift with l10 = a", "k1_lift", "numeric",
+               "a number in N/m; accepted within 0.5 %")
+def _t61(answer):
+    return numeric(answer, lab6_scissors(LAB6_SCISSORS["length"]).parameters["k1"], "stiffness")
+
+
+@register_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's crank for a_x1 = 0.25 m", "k1_board",
+               "numeric", "a number in N/m; accepted within 0.5 %")
+def _t62(answer):
+    return numeric(answer, peaucellier_board(**LAB6_BOARD).parameters["k1"], "stiffness")
+
+
+@register_task("6.3", "a softer projector lift (open design)", "lift_design", "design",
+               "a dict {'l10': m, 'k1': N/m, 'k2': N/m}: spring 1's free length and both rates; "
+               "k1 and k2 at most 600 N/m, l10 at most 0.45 m; balanced to 0.1 %", points=2)
+def _t63(answer):
+    a = as_mapping(answer, ("l10", "k1", "k2"), "your lift")
+    l10 = quantity(a["l10"], "length", "l10")
+    k1 = quantity(a["k1"], "stiffness", "k1")
+    k2 = quantity(a["k2"], "stiffness", "k2")
+    if l10 <= 0 or k1 <= 0 or k2 <= 0:
+        raise AnswerError("l10, k1 and k2 must be positive.", "Free lengths and rates are > 0.")
+    p = LAB6_SCISSORS
+    try:
+        d = lab6_scissors(l10, k1, k2)
+    except (ValueError, TypeError) as e:
+        raise AnswerError(f"This choice gives no lift: {e}", "Pick another l10.")
+    cons = [(k1 <= p["k_max"] * (1 + 1e-9) and k2 <= p["k_max"] * (1 + 1e-9),
+             f"a spring stiffer than {p['k_max']:g} N/m"),
+            (l10 <= p["l10_max"] + 1e-12, f"l10 longer than {p['l10_max']} m")]
+    return design_balanced(d, cons)
