@@ -48,8 +48,16 @@ def jupyterlab(tmp_path_factory):
            f"--ServerApp.port={port}", "--ServerApp.port_retries=0",
            f"--IdentityProvider.token={token}", f"--ServerApp.root_dir={work}",
            "--LabApp.news_url=", "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
-           f"--LabApp.user_settings_dir={work / '.settings'}",
+           f"--LabApp.user_settings_dir={work / '.settings'}", "--LabApp.expose_app_in_browser=True",
            f"--LabApp.workspaces_dir={work / '.ws'}"]
+    # Start the notebook's own kernel without asking ("Select Kernel" otherwise appears at random
+    # and cells queued meanwhile are dropped) and fetch no news: a test waits for conditions only.
+    settings = work / ".settings"
+    for plugin, values in (("notebook-extension/tracker", {"autoStartDefaultKernel": True}),
+                           ("apputils-extension/notification", {"fetchNews": "false"})):
+        path = settings / "@jupyterlab" / f"{plugin}.jupyterlab-settings"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(values))
     log = open(work / "server.log", "w")
     proc = subprocess.Popen(cmd, cwd=work, env=env, stdout=log, stderr=subprocess.STDOUT)
     url = f"http://127.0.0.1:{port}"
@@ -75,53 +83,28 @@ def jupyterlab(tmp_path_factory):
         log.close()
 
 
-def _accept_dialogs(page) -> bool:
-    """Accept every dialog JupyterLab shows (e.g. "Select Kernel"); True if there was one."""
-    seen = False
-    for _ in range(10):
-        button = page.locator(".jp-Dialog .jp-mod-accept")
-        if not (button.count() and button.first.is_visible()):
-            break
-        button.first.click()
-        seen = True
-        page.wait_for_timeout(500)
-    return seen
-
-
-def _run_all(page) -> None:
-    """Run > Run All Cells."""
-    _accept_dialogs(page)
-    page.locator(".lm-MenuBar-itemLabel", has_text="Run").first.click()
-    page.locator(".lm-Menu-itemLabel", has_text="Run All Cells").first.click()
-
-
-def _wait_through_kernel_dialog(page, locator, timeout_s: float) -> None:
-    """Wait for ``locator`` while making sure the notebook's cells really run.
-
-    JupyterLab sometimes asks which kernel to start even when the notebook names an
-    installed one, and cells queued while the kernel's session is still being set up can
-    be dropped. So: accept the "Select Kernel" dialog (its default is the notebook's own
-    kernel), and whenever the kernel sits idle with no explorer on the page, run all the
-    cells again.
-    """
-    idle = ".jp-Notebook-ExecutionIndicator[data-status='idle']"
-    deadline = time.monotonic() + timeout_s
-    last_run = time.monotonic()
-    while time.monotonic() < deadline:
-        if _accept_dialogs(page):
-            page.wait_for_selector(idle, timeout=60_000)
-            _run_all(page)
-            last_run = time.monotonic()
-        try:
-            locator.wait_for(timeout=2_000)
-            return
-        except Exception:
-            pass
-        if time.monotonic() - last_run > 20 and page.locator(idle).count():
-            _run_all(page)
-            last_run = time.monotonic()
+def _fail_with_screenshot(page, what: str) -> None:
     page.screenshot(path=str(SHOTS / "failure.png"), full_page=True)
-    pytest.fail(f"the explorer did not appear within {timeout_s:.0f} s; see {SHOTS / 'failure.png'}")
+    pytest.fail(f"{what}; see {SHOTS / 'failure.png'}")
+
+
+#: true once the open notebook is loaded and its kernel is connected and idle (JupyterLab's own state)
+KERNEL_READY = """() => {
+    const app = window.jupyterapp;
+    const panel = app && app.shell.currentWidget;
+    if (!panel || !panel.sessionContext || !panel.context || !panel.context.isReady) return false;
+    const kernel = panel.sessionContext.session && panel.sessionContext.session.kernel;
+    return panel.sessionContext.isReady && !!kernel && kernel.connectionStatus === "connected"
+        && kernel.status === "idle";
+}"""
+
+
+def _run_all_once(page) -> None:
+    """Run every cell, exactly once, when the notebook's kernel is connected and idle."""
+    page.wait_for_function(KERNEL_READY, timeout=120_000)
+    if page.locator(".jp-Dialog").count():
+        _fail_with_screenshot(page, "JupyterLab opened a dialog: " + page.locator(".jp-Dialog").inner_text())
+    page.evaluate("() => window.jupyterapp.commands.execute('notebook:run-all-cells')")
 
 
 def test_lab_explorer_reacts_to_a_slider(jupyterlab):
@@ -137,17 +120,20 @@ def test_lab_explorer_reacts_to_a_slider(jupyterlab):
             page = browser.new_page(viewport={"width": 1400, "height": 1000})
             page.goto(f"{url}/lab/tree/lab1.ipynb?token={token}")
             page.wait_for_selector(".jp-Notebook", timeout=60_000)
-            page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']", timeout=60_000)
-            _run_all(page)
+            _run_all_once(page)
             explorer = page.locator(".widget-vbox").first
-            _wait_through_kernel_dialog(page, explorer, timeout_s=180)
-            image = explorer.locator("img").first
-            image.wait_for(timeout=60_000)
-            report = explorer.locator(".widget-html-content").first
-            page.wait_for_function("el => el.textContent.includes('balanced')", arg=report.element_handle(),
-                                   timeout=60_000)
+            try:
+                explorer.wait_for(timeout=180_000)
+                image = explorer.locator("img").first
+                image.wait_for(timeout=60_000)
+                report = explorer.locator(".widget-html-content").first
+                page.wait_for_function("el => el.textContent.includes('balanced')",
+                                       arg=report.element_handle(), timeout=60_000)
+            except Exception as err:  # noqa: BLE001 - any wait that times out is the failure
+                _fail_with_screenshot(page, f"the explorer did not appear: {err}")
             explorer.scroll_into_view_if_needed()
-            page.wait_for_timeout(500)
+            page.wait_for_function("img => img.complete && img.naturalWidth > 0", arg=image.element_handle(),
+                                   timeout=30_000)
             text_before = report.inner_text()
             img_before = image.screenshot()
             src_before = image.get_attribute("src")
@@ -165,7 +151,8 @@ def test_lab_explorer_reacts_to_a_slider(jupyterlab):
                                    arg=[report.element_handle(), text_before], timeout=30_000)
             page.wait_for_function("([el, old]) => el.getAttribute('src') !== old",
                                    arg=[image.element_handle(), src_before], timeout=30_000)
-            page.wait_for_timeout(500)
+            page.wait_for_function("img => img.complete && img.naturalWidth > 0", arg=image.element_handle(),
+                                   timeout=30_000)
             text_after = report.inner_text()
             img_after = image.screenshot()
             page.screenshot(path=str(SHOTS / "after.png"))
