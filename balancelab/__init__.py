@@ -33,8 +33,8 @@ only when something that needs them is first used.
 import importlib
 
 from .core import (BALANCE_TOLERANCE, Attachment, BalanceReport, Design, Energy, G, Joint, Kinematics, Load,
-                   Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
-from .mechanisms import (ExplicitKinematics, FourBarKinematics, PeaucellierKinematics, TreeKinematics,
+                   Pulley, Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
+from .mechanisms import (ExplicitKinematics, FourBar, FourBarKinematics, PeaucellierKinematics, TreeKinematics,
                          fourbar_joints, lever_kinematics, scissors_kinematics, serial_2r_kinematics)
 from .methods import lecture, singh
 from .course.catalog import catalog
@@ -52,8 +52,8 @@ _LAZY = {
 
 __all__ = [
     "BALANCE_TOLERANCE", "Attachment", "BalanceReport", "Design", "Energy", "G", "Joint", "Kinematics",
-    "Load", "Spring", "SymbolicParts", "UnreachableConfiguration", "gravity_load",
-    "ExplicitKinematics", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics", "fourbar_joints",
+    "Load", "Pulley", "Spring", "SymbolicParts", "UnreachableConfiguration", "gravity_load",
+    "ExplicitKinematics", "FourBar", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics", "fourbar_joints",
     "lever_kinematics", "scissors_kinematics", "serial_2r_kinematics",
     "lecture", "singh", "catalog", *_LAZY,
 ]

@@ -1,0 +1,131 @@
+"""The package's architecture, checked: layers, declared seams, size limits, the public namespace."""
+from __future__ import annotations
+
+import ast
+import importlib
+import inspect
+from pathlib import Path
+
+import pytest
+
+import balancelab as bl
+
+PACKAGE = Path(bl.__file__).parent
+MODULES = sorted(p for p in PACKAGE.rglob("*.py"))
+#: a layer may import itself and the layers before it
+LAYERS = ["core", "mechanisms", "methods", "viz", "course"]
+MAX_MODULE_LINES = 600
+MAX_FUNCTION_LINES = 80
+
+
+def _name(path: Path) -> str:
+    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _tree(path: Path) -> ast.Module:
+    return ast.parse(path.read_text(encoding="utf-8"))
+
+
+def _imports(path: Path):
+    """``(target module, imported names)`` of every balancelab import in ``path``, made absolute."""
+    here = _name(path)
+    package = here if path.name == "__init__.py" else here.rpartition(".")[0]
+    for node in ast.walk(_tree(path)):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[:len(base) - node.level + 1]
+                target = ".".join(base + ([node.module] if node.module else []))
+            else:
+                target = node.module or ""
+            if target.split(".")[0] == "balancelab":
+                yield target, [a.name for a in node.names]
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                if a.name.split(".")[0] == "balancelab":
+                    yield a.name, []
+
+
+def _layer(module: str) -> int | None:
+    parts = module.split(".")
+    return LAYERS.index(parts[1]) if len(parts) > 1 and parts[1] in LAYERS else None
+
+
+@pytest.mark.parametrize("path", MODULES, ids=_name)
+def test_layers_only_look_down(path):
+    mine = _layer(_name(path))
+    if mine is None:
+        return  # the top-level __init__ re-exports every layer
+    for target, _ in _imports(path):
+        theirs = _layer(target)
+        assert theirs is not None and theirs <= mine, f"{_name(path)} imports {target}"
+
+
+@pytest.mark.parametrize("path", MODULES, ids=_name)
+def test_no_module_reaches_into_another_modules_private_names(path):
+    for target, names in _imports(path):
+        private = [n for n in names if n.startswith("_")]
+        assert not private, f"{_name(path)} imports private {private} from {target}"
+
+
+@pytest.mark.parametrize("path", MODULES, ids=_name)
+def test_every_module_declares_its_public_names(path):
+    tree = _tree(path)
+    declared = [n for n in tree.body if isinstance(n, ast.Assign)
+                and any(isinstance(t, ast.Name) and t.id == "__all__" for t in n.targets)]
+    assert declared or path.name == "__main__.py", f"{_name(path)} has no __all__"
+    module = importlib.import_module(_name(path))
+    for name in module.__all__:
+        assert hasattr(module, name), f"{_name(path)}.__all__ names {name!r}, which it lacks"
+
+
+@pytest.mark.parametrize("path", MODULES, ids=_name)
+def test_modules_and_functions_are_short_enough_to_read(path):
+    text = path.read_text(encoding="utf-8")
+    tree = ast.parse(text)
+    lines = len(text.splitlines())
+    doc = ast.get_docstring(tree) or ""
+    assert lines <= MAX_MODULE_LINES or "must be longer" in doc, (
+        f"{_name(path)} has {lines} lines; split it or say in its docstring why it must be longer")
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            body = node.body
+            if body and isinstance(body[0], ast.Expr) and isinstance(getattr(body[0], "value", None),
+                                                                      ast.Constant):
+                body = body[1:]  # the docstring does not count
+            if not body:
+                continue
+            n = body[-1].end_lineno - body[0].lineno + 1
+            assert n <= MAX_FUNCTION_LINES, f"{_name(path)}.{node.name} runs {n} lines"
+
+
+def test_subpackage_docstrings_say_what_lives_there_and_what_it_may_import():
+    for layer in LAYERS:
+        doc = importlib.import_module(f"balancelab.{layer}").__doc__
+        assert "What lives here" in doc and "may import" in doc, layer
+
+
+def test_top_level_namespace_is_deliberate():
+    names = set(bl.__all__)
+    assert set(dir(bl)) >= names  # lazily loaded names are listed too
+    for lazy in ("draw", "energy_plot", "animate", "explore", "deepak", "lustig", "realize", "viz"):
+        assert lazy in dir(bl)
+    for fn in ("draw", "energy_plot", "animate", "explore", "catalog"):
+        assert inspect.isfunction(getattr(bl, fn)), fn  # functions, never modules of the same name
+    for family in ("lecture", "singh", "lustig", "deepak", "realize"):
+        assert inspect.ismodule(getattr(bl, family))
+    # paper-specific methods sit in their family's namespace, not at the top level
+    for specific in ("solve", "synthesize", "serial_2r_min_preload", "lacoste_lever", "technique2"):
+        assert specific not in names and not hasattr(bl, specific), specific
+    assert bl.lustig.solve and bl.singh.lacoste_lever and bl.deepak.technique2
+
+
+def test_import_is_light():
+    import subprocess
+    import sys
+
+    code = ("import sys, balancelab; heavy = [m for m in ('matplotlib', 'scipy', 'sympy', 'ipywidgets') "
+            "if m in sys.modules]; print(heavy)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"

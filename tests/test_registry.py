@@ -1,0 +1,43 @@
+"""The registry of worked examples: declared next to the methods, ordered by the course."""
+from __future__ import annotations
+
+import pytest
+
+import balancelab as bl
+from balancelab.methods import registry
+
+
+def test_catalog_is_the_registry_in_course_order():
+    examples = registry.examples()
+    assert list(bl.catalog()) == list(examples)
+    chapters = [e.chapter for e in examples.values()]
+    assert chapters == sorted(chapters)
+    names = list(examples)
+    # within a chapter, the lecture before the papers; within a module, top to bottom
+    assert names.index("single_link_zfl") < names.index("single_link_zfl_below") < names.index("lacoste_lever")
+    assert names.index("fourbar_counterweights") < names.index("singh_fourbar") < names.index("deepak_technique1")
+    assert names[-2:] == ["scissors_lift", "peaucellier_board"]
+
+
+def test_every_example_names_its_family_and_counter_examples_are_marked():
+    for name, ex in registry.examples().items():
+        assert ex.family in registry.FAMILIES and ex.function.__module__.startswith("balancelab.methods")
+    unbalanced = {n for n, e in registry.examples().items() if not e.expected_balanced}
+    assert unbalanced == {"single_link_ordinary_spring", "approximate_spring_lever",
+                          "deepak_spring_loaded_fourbar"}
+
+
+def test_registering_a_name_twice_for_another_example_is_refused():
+    with pytest.raises(ValueError, match="already registered"):
+        registry.register("lacoste_lever", "again", bl.singh.generalized_lever, chapter=2)
+
+
+def test_an_example_outside_a_method_family_is_refused():
+    def factory():
+        return bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+
+    with pytest.raises(ValueError, match="method family"):
+        registry.register("outsider", "not a method", factory, chapter=2)
+    with pytest.raises(ValueError, match="chapter"):
+        registry.register("outsider", "no chapter", bl.singh.lacoste_lever, chapter=0)
+    assert "outsider" not in registry.examples()
