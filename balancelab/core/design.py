@@ -492,27 +492,27 @@ class Design:
 
     def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,
                        tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
-        """Check that the potential energy is constant over many configurations.
+        """Check that the potential energy ``V`` is constant over many configurations.
 
-        The total energy is evaluated over ``n`` sampled configurations (or the given
-        ``q``). Its spread ``max - min`` is divided by an energy scale, the sum over every
-        load and spring of the spread of its *own* energy over the same configurations
-        (so the verdict does not depend on where the origin is, and a counterweight
-        design, whose gravity energy is constant in total, still has a scale). The
-        design is reported balanced when this ratio is at most ``tolerance``
-        (:data:`BALANCE_TOLERANCE` = 1e-9 by default). The largest generalized force
-        ``|dV/dq|``, divided by the same scale, is reported too.
+        *Balanced* means: over the configurations, ``max V - min V <= tolerance * L``, where
+        ``L`` (``load_scale``) is the energy the loads exchange: the sum of the spreads
+        ``max - min`` of the loads' energies (loads acting at the same point added up first).
+        Springs never enter ``L``: springs that cancel each other cannot make an unbalanced
+        design look balanced. When the loads exchange no energy (spring-loaded mechanisms;
+        below 1e-12 of ``scale``) the springs are the load: ``L = scale``, the sum of the spreads
+        of every element's own energy (see :class:`BalanceReport`). At least 10 distinct
+        configurations, spanning a quarter of each coordinate's reachable range, are needed.
 
         Parameters
         ----------
         q : array_like, shape (m, dof), optional
-            Configurations to use instead of sampling.
+            Configurations (rad) to use instead of sampling.
         n : int
-            Number of sampled configurations when ``q`` is not given.
+            Number of sampled configurations when ``q`` is not given, >= 10.
         seed : int or None
             Seed for the sampling.
         tolerance : float
-            Relative tolerance for the ``balanced`` verdict.
+            Relative tolerance, ``0 < tolerance < 1`` (:data:`BALANCE_TOLERANCE` = 1e-9).
 
         Returns
         -------
@@ -570,8 +570,10 @@ class Design:
         """The equations that make the potential energy constant.
 
         Every coefficient of a non-constant trigonometric term of the energy (see
-        :meth:`trig_coefficients`) set to zero. For a closed loop written through its
-        joints these conditions are sufficient; they are also necessary for open chains.
+        :meth:`trig_coefficients`) set to zero: exact for independent coordinates; for a
+        loop whose symbols are tied, the energy is first reduced by the closure equations.
+        Raises ``NotImplementedError`` where no exact conditions exist (use
+        :meth:`balance_report`).
 
         Returns
         -------

@@ -3,19 +3,51 @@
 :func:`balance_report` is what :meth:`balancelab.Design.balance_report` computes; the
 :class:`BalanceReport` it returns and the :class:`Energy` triple of
 :meth:`balancelab.Design.potential_energy` live here too. Layer: core.
+
+The verdict cannot be fooled by the three tricks that fooled it in 0.1:
+
+* too few configurations (``n=1``, or a ``q`` that stays near one configuration) are refused
+  (:data:`MIN_CONFIGURATIONS`, :data:`MIN_COVERAGE`);
+* a tolerance that is not a number between 0 and 1 is refused (:func:`check_tolerance`);
+* springs that cancel each other (two stiff springs whose energies sum to a constant) no longer
+  make an unbalanced design look balanced: the energy is compared with the energy the *loads*
+  exchange, which springs cannot change (:func:`load_scale`).
 """
 from __future__ import annotations
 
+import math
+import weakref
 from dataclasses import dataclass
+from numbers import Real
 from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["BALANCE_TOLERANCE", "Energy", "BalanceReport", "balance_report"]
+from .validation import positive_int
+
+__all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
+           "balance_report", "check_tolerance", "reachable_extent", "load_scale"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
-#: potential energy over the sampled configurations, divided by the energy scale.
+#: potential energy over the sampled configurations, divided by the load scale.
 BALANCE_TOLERANCE: float = 1e-9
+
+#: Fewest distinct configurations a report accepts.
+MIN_CONFIGURATIONS: int = 10
+
+#: Smallest part of each coordinate's reachable range the configurations must span.
+MIN_COVERAGE: float = 0.25
+
+#: Loads whose energies spread by less than this fraction of :attr:`BalanceReport.scale` are
+#: round-off: the design is then treated as spring-loaded (its springs are the load).
+_ROUND_OFF = 1e-12
+
+#: Round-off allowance of the verdict (about 45 machine epsilons): the total energy cannot be
+#: summed more exactly than this fraction of the energies summed, ``sum of the loads' spreads +
+#: sum of the springs' largest energies`` (J), both independent of the origin.
+ROUND_OFF_ALLOWANCE: float = 1e-14
+
+_EXTENTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 class Energy(NamedTuple):
@@ -44,11 +76,23 @@ class BalanceReport:
     worst_q : numpy.ndarray
         Configuration with the largest residual generalized force.
     balanced : bool
-        ``variation <= tolerance``.
+        ``load_variation <= tolerance``, up to the round-off of summing the energies of very
+        stiff springs (:data:`ROUND_OFF_ALLOWANCE`).
     tolerance : float
         The tolerance used (default :data:`BALANCE_TOLERANCE`).
     n : int
         Number of configurations examined.
+    load_scale : float
+        The energy the loads exchange (J), see :func:`load_scale`; at most ``scale``.
+    load_variation : float
+        ``(max V - min V) / load_scale``: the number the verdict compares with ``tolerance``.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> r = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).balance_report()
+    >>> r.balanced, round(r.scale, 2), round(r.load_scale, 2)  # J: about W l ptp(sin) = 10 * 0.5 * 2
+    (True, 20.0, 10.0)
     """
 
     variation: float
@@ -59,14 +103,134 @@ class BalanceReport:
     balanced: bool
     tolerance: float
     n: int
+    load_scale: float = math.nan
+    load_variation: float = math.nan
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
         q = ", ".join(f"{np.degrees(v):.1f}°" for v in np.atleast_1d(self.worst_q))
         return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
-                f"({self.scale:.4g} J) over {self.n} configurations; "
+                f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
+                f"({self.load_scale:.4g} J) over {self.n} configurations; "
                 f"largest residual dV/dq = {self.residual:.2e} × scale per rad at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
+
+
+def check_tolerance(tolerance) -> float:
+    """``tolerance`` as a float with ``0 < tolerance < 1``, or a TypeError/ValueError naming it.
+
+    Examples
+    --------
+    >>> check_tolerance(1e-3)
+    0.001
+    >>> check_tolerance(0.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: tolerance must be a real number with 0 < tolerance < 1 (a relative energy variation), got 0.0
+    """
+    if isinstance(tolerance, bool) or not isinstance(tolerance, (Real, np.floating, np.integer)):
+        raise TypeError("tolerance must be a real number with 0 < tolerance < 1 (a relative energy "
+                        f"variation), got {type(tolerance).__name__} {tolerance!r}")
+    value = float(tolerance)
+    if not (math.isfinite(value) and 0.0 < value < 1.0):
+        raise ValueError("tolerance must be a real number with 0 < tolerance < 1 (a relative energy "
+                         f"variation), got {value}")
+    return value
+
+
+def reachable_extent(design) -> np.ndarray:
+    """Extent ``max - min`` (rad) of each coordinate over the default sample of ``design``.
+
+    The default sample is ``design.sample(1000, seed=0)``: the configurations
+    :func:`balance_report` uses when given none. Cached per design (designs are immutable).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> reachable_extent(bl.singh.scissors_lift()).round(2).tolist()  # of [0, pi/2]
+    [1.57]
+    """
+    extent = _EXTENTS.get(design)
+    if extent is None:
+        extent = np.ptp(design.sample(1000, 0), axis=0)
+        _EXTENTS[design] = extent
+    return extent
+
+
+def _configurations(design, q, n, seed) -> np.ndarray:
+    """The configurations of a report: at least MIN_CONFIGURATIONS distinct ones spanning
+    at least MIN_COVERAGE of each coordinate's reachable range."""
+    if q is None:
+        what = "n"
+        n = positive_int("n (number of configurations)", n, minimum=MIN_CONFIGURATIONS)
+        q = design.sample(n, seed)
+    else:
+        what = "q"
+        q = design.check_q(q).reshape(-1, design.dof)
+        distinct = len(np.unique(q, axis=0))
+        if distinct < MIN_CONFIGURATIONS:
+            raise ValueError(f"q must hold at least {MIN_CONFIGURATIONS} distinct configurations to show "
+                             f"that the energy is constant, got {distinct}")
+    extent = np.ptp(q, axis=0)
+    reach = extent if (what == "n" and n == 1000 and seed == 0) else reachable_extent(design)
+    for name, span, full in zip(design.q_names, extent, reach):
+        if span < MIN_COVERAGE * full:
+            raise ValueError(
+                f"{what} must give configurations spanning at least {MIN_COVERAGE:g} of each "
+                f"coordinate's reachable range: {name} spans {np.degrees(span):.3g}° of "
+                f"{np.degrees(full):.4g}°" + (" (sample more configurations)" if what == "n" else ""))
+    return q
+
+
+def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
+    """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
+
+    Loads acting at the same point (the same world position in every configuration,
+    e.g. a force and its opposite) are added up first; the scale is the sum of the spreads
+    ``max - min`` of these groups' energies. Springs do not enter it, so springs that
+    cancel each other cannot inflate it. A design whose loads exchange no energy (a
+    spring-loaded mechanism, or loads that only stand still; below ``1e-12 * scale``)
+    has its springs as the load: the scale is then ``scale``, the sum of the spreads of
+    every element's energy.
+
+    Parameters
+    ----------
+    design : Design
+    q : numpy.ndarray, shape (m, dof)
+        Configurations (rad).
+    load_energies : numpy.ndarray, shape (m, n_loads)
+        Energy of each load (J), as from ``design.element_energies(q)[0]``.
+    scale : float
+        Sum of the spreads of every load's and spring's energy (J).
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.catalog()["single_link_counterweight"]()
+    >>> q = d.sample(100)
+    >>> vl, vs = d.element_energies(q)
+    >>> s = float(np.ptp(vl, axis=0).sum())
+    >>> bool(abs(load_scale(d, q, vl, s) - s) < 1e-9 * s)  # counterweights: every load counts
+    True
+    """
+    loads = design.loads
+    total = 0.0
+    if loads:
+        pts = design.world_points(q, [(ld.body, ld.point) for ld in loads])  # (m, nL, 2)
+        size = max(float(np.max(np.ptp(pts, axis=0))), 1e-300)
+        group = list(range(len(loads)))
+        for i in range(len(loads)):
+            for j in range(i):
+                if group[j] == j and np.max(np.abs(pts[:, i] - pts[:, j])) <= 1e-9 * size:
+                    group[i] = j
+                    break
+        for g in set(group):
+            total += float(np.ptp(load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1)))
+    return total if total > _ROUND_OFF * scale else scale
 
 
 def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
@@ -79,20 +243,22 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     >>> balance_report(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)).balanced
     True
     """
-    q = design.sample(n, seed) if q is None else design.check_q(q).reshape(-1, design.dof)
+    tolerance = check_tolerance(tolerance)
+    q = _configurations(design, q, n, seed)
     vl, vs = design.element_energies(q)
     total = vl.sum(-1) + vs.sum(-1)
-    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0))) if len(q) else 0.0
-    if scale == 0.0:
-        scale = float(np.max(np.abs(total))) if total.size else 0.0
+    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
     if scale == 0.0:
         raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
                          "so there is nothing to balance")
-    variation = float(np.ptp(total)) / scale
+    yardstick = load_scale(design, q, vl, scale)
+    spread = float(np.ptp(total))
+    summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
+    roundoff = ROUND_OFF_ALLOWANCE * float(summed)
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
-    return BalanceReport(variation=variation, residual=float(mag[worst]) / scale, scale=scale,
+    return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
-                         balanced=bool(variation <= tolerance), tolerance=tolerance, n=len(q))
-
+                         balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
+                         load_scale=yardstick, load_variation=spread / yardstick)

@@ -28,7 +28,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.elements import G, Load, Pulley, Spring
-from ..core.validation import finite_real, planar_point
+from ..core.validation import finite_real, planar_point, positive_int
 from ..mechanisms.lever import lever_design
 from .registry import register
 
@@ -281,8 +281,7 @@ def pulley_balance_error(design: Design, radius: float | None = None, n: int = 2
     """
     if design.dof != 1:
         raise ValueError("pulley_balance_error handles one-degree-of-freedom designs")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
-        raise ValueError(f"n must be an integer >= 3, got {n!r}")
+    n = positive_int("n (configurations, at least MIN_CONFIGURATIONS = 10)", n, minimum=10)
     lo, hi = design.q_range[0]
     q = np.linspace(lo, hi, n)
     V = pulley_energy(design, q, radius)
