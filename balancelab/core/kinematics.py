@@ -139,6 +139,9 @@ class Kinematics(ABC):
     q_range: np.ndarray
     #: bodies whose angles are the symbolic coordinates, when they are not ``q`` itself
     symbol_bodies: tuple | None = None
+    #: True when :meth:`symbols` are independent coordinates (an open chain, a relaxed loop),
+    #: False when they are tied by loop-closure equations; None: as many symbols as ``dof``
+    independent_symbols: bool | None = None
 
     @property
     def dof(self) -> int:

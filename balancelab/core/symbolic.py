@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["potential_energy_symbolic", "trig_coefficients", "balance_conditions",
-           "conditions_residual"]
+__all__ = ["potential_energy_symbolic", "trig_coefficients", "symbols_are_independent",
+           "constrained_coefficients", "balance_conditions", "conditions_residual"]
 
 
 def _symbolic_parts(design, parametric: bool):
@@ -99,6 +99,33 @@ def _check_symbolic_length(design, syms, length, ends, parametric) -> None:
                 "sines and cosines of the coordinates; no symbolic energy is available")
 
 
+def _trig_polynomial(design, expr, syms):
+    """``expr`` as a polynomial in ``S_i = sin(q_i)``, ``C_i = cos(q_i)``: ``(poly expr, S, C)``."""
+    import sympy as sp
+
+    C = sp.symbols(f"C0:{len(syms)}")
+    S = sp.symbols(f"S0:{len(syms)}")
+    e = sp.expand(sp.expand_trig(sp.expand(expr)))
+    e = e.subs({sp.cos(t): c for t, c in zip(syms, C)}).subs({sp.sin(t): s for t, s in zip(syms, S)})
+    if any(e.has(t) for t in syms) or not e.is_polynomial(*S, *C):
+        raise NotImplementedError(
+            f"{design.name}: the energy is not a polynomial in the sines and cosines of {syms} (a "
+            "finite-free-length spring's length is a square root), so no balance conditions can be "
+            "read off its coefficients; check the design numerically with balance_report()")
+    return sp.expand(e), S, C
+
+
+def _coefficient_dict(poly, gens, syms, S, C, simplify: bool) -> dict:
+    import sympy as sp
+
+    back = {**{c: sp.cos(t) for t, c in zip(syms, C)}, **{s: sp.sin(t) for t, s in zip(syms, S)}}
+    out = {}
+    for monom, coeff in poly.terms():
+        term = sp.Mul(*[g ** p for g, p in zip(gens, monom)]).subs(back)
+        out[term] = sp.simplify(coeff) if simplify else coeff
+    return out
+
+
 def trig_coefficients(design, parametric: bool = True) -> dict:
     """Coefficients of the potential energy in a unique trigonometric form.
 
@@ -111,43 +138,188 @@ def trig_coefficients(design, parametric: bool = True) -> dict:
     dict
         Maps each trigonometric monomial (a sympy expression, ``1`` for the constant)
         to its coefficient.
+
+    Raises
+    ------
+    NotImplementedError
+        If the energy is not a polynomial in the sines and cosines (a finite-free-length
+        spring whose length is a square root).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
+    >>> sorted(map(str, trig_coefficients(d)))
+    ['1', 'sin(theta)']
     """
     key = ("coeffs", parametric)
     if key not in design._sym_cache:
         import sympy as sp
 
-        expr = potential_energy_symbolic(design, parametric)
         syms = design.kinematics.symbols()
-        C = sp.symbols(f"C0:{len(syms)}")
-        S = sp.symbols(f"S0:{len(syms)}")
-        e = sp.expand(sp.expand_trig(sp.expand(expr)))
-        e = e.subs({sp.cos(t): c for t, c in zip(syms, C)}).subs({sp.sin(t): s for t, s in zip(syms, S)})
-        if any(e.has(t) for t in syms):
-            raise ValueError(f"{design.name}: the energy is not a trigonometric polynomial in "
-                             f"{syms}; no coefficient form exists")
+        e, S, C = _trig_polynomial(design, potential_energy_symbolic(design, parametric), syms)
         gens = list(S) + list(C)
         basis = [s ** 2 + c ** 2 - 1 for s, c in zip(S, C)]
-        _, rem = sp.reduced(sp.expand(e), basis, *gens, order="lex")
+        _, rem = sp.reduced(e, basis, *gens, order="lex")
         poly = sp.Poly(rem, *gens)
-        back = {**{c: sp.cos(t) for t, c in zip(syms, C)}, **{s: sp.sin(t) for t, s in zip(syms, S)}}
-        out = {}
-        for monom, coeff in poly.terms():
-            term = sp.Mul(*[g ** p for g, p in zip(gens, monom)]).subs(back)
-            out[term] = sp.simplify(coeff) if parametric and design.symbolic is not None else coeff
-        design._sym_cache[key] = out
+        design._sym_cache[key] = _coefficient_dict(poly, gens, syms, S, C,
+                                                   parametric and design.symbolic is not None)
     return dict(design._sym_cache[key])
+
+
+def symbols_are_independent(kinematics) -> bool:
+    """Whether the sympy symbols of ``kinematics`` are independent coordinates.
+
+    True when the kinematics says so (its ``independent_symbols``: the relaxed
+    Peaucellier model, a relaxed four-bar), and otherwise when there are as many symbols
+    as degrees of freedom. A closed loop written in more symbols than it has degrees of
+    freedom (the ``"loop"`` four-bar: crank and rocker angles) is not: its symbols are
+    tied by the loop-closure equation.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> symbols_are_independent(bl.FourBarKinematics((0, 0), (0.4, 0), 0.1, 0.35, 0.3))
+    False
+    >>> symbols_are_independent(bl.FourBarKinematics((0, 0), (0.4, 0), 0.1, 0.35, 0.3, symbolic="relaxed"))
+    True
+    """
+    flag = getattr(kinematics, "independent_symbols", None)
+    if flag is not None:
+        return bool(flag)
+    return len(kinematics.symbols()) == kinematics.dof
+
+
+def _constraints(design, syms, S, C) -> list:
+    """Polynomials in ``S, C`` that vanish in every pose: rigidity of each body between its
+    joint points and the closure of each joint, as written by the symbolic kinematics."""
+    import itertools
+
+    import sympy as sp
+
+    kin = design.kinematics
+    out = []
+    for j in design.joints:
+        p, q = kin.symbolic_point(j[0], j[1], syms), kin.symbolic_point(j[2], j[3], syms)
+        out += [p[0] - q[0], p[1] - q[1]]
+    for body in range(1, kin.nbodies):
+        pts = {tuple(j[1]) for j in design.joints if j[0] == body} | {tuple(j[3]) for j in design.joints
+                                                                      if j[2] == body}
+        for u, v in itertools.combinations(sorted(pts), 2):
+            pu, pv = kin.symbolic_point(body, u, syms), kin.symbolic_point(body, v, syms)
+            r2 = (u[0] - v[0]) ** 2 + (u[1] - v[1]) ** 2
+            out.append((pu[0] - pv[0]) ** 2 + (pu[1] - pv[1]) ** 2 - r2)
+    circles = [s ** 2 + c ** 2 - 1 for s, c in zip(S, C)]
+    gens = list(S) + list(C)
+    polys = []
+    for c in out:
+        e, _, _ = _trig_polynomial(design, sp.sympify(c), syms)
+        e = sp.nsimplify(e, rational=True)
+        if sp.reduced(e, circles, *gens, order="grevlex")[1] != 0:
+            polys.append(e)
+    return circles + polys
+
+
+def _standard_monomials(G, gens, degree: int) -> list:
+    """Monomials of total degree <= ``degree`` not divisible by a leading monomial of ``G``."""
+    import itertools
+
+    import sympy as sp
+
+    leads = [sp.Poly(g, *gens).monoms(order="grevlex")[0] for g in G.exprs]
+    out = []
+    for monom in itertools.product(range(degree + 1), repeat=len(gens)):
+        if sum(monom) <= degree and not any(all(m >= l for m, l in zip(monom, lead)) for lead in leads):
+            out.append(monom)
+    return out
+
+
+def _check_necessary(design, G, gens, degree: int) -> None:
+    """Refuse unless no nonzero normal form of degree <= ``degree`` vanishes on the design's
+    reachable configurations (then a constant energy forces every condition)."""
+    kin = design.kinematics
+    monoms = _standard_monomials(G, gens, degree)
+    q = design.sample(max(400, 4 * len(monoms)), seed=1)
+    ang = np.asarray(kin.symbol_values(q), dtype=float).reshape(len(q), -1)
+    vals = np.concatenate([np.sin(ang), np.cos(ang)], axis=1)
+    M = np.stack([np.prod(vals ** np.array(m), axis=1) for m in monoms], axis=1)
+    sv = np.linalg.svd(M, compute_uv=False)
+    if sv[-1] < 1e-9 * sv[0]:
+        raise NotImplementedError(
+            f"{design.name}: the symbols {kin.symbols()} are not independent coordinates and their "
+            "loop-closure equations do not describe this linkage's motion alone (a reducible or "
+            "degenerate loop); exact balance conditions cannot be derived in these symbols. Check "
+            "the design numerically with balance_report()")
+
+
+def constrained_coefficients(design, parametric: bool = True) -> dict:
+    """Coefficients of the energy reduced modulo the linkage's own closure equations.
+
+    For kinematics whose symbols are tied (a ``"loop"`` four-bar: crank and rocker
+    angles), the energy is reduced to its normal form modulo a Groebner basis of the
+    circle identities and the closure polynomials (each body rigid between its joint
+    points, each joint closed). The energy is constant on the motion exactly when every
+    non-constant coefficient of that normal form vanishes; this is checked to be a
+    necessary condition on the design's reachable configurations.
+
+    Raises
+    ------
+    NotImplementedError
+        If the conditions would not be necessary (degenerate loop), the symbolic
+        kinematics has symbolic link lengths, or the energy is not a trigonometric
+        polynomial.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.lecture.fourbar_counterweights()
+    >>> max(abs(float(c)) for t, c in constrained_coefficients(d, False).items() if t != 1) < 1e-9
+    True
+    """
+    key = ("ccoeffs", parametric)
+    if key not in design._sym_cache:
+        import sympy as sp
+
+        if parametric and design.symbolic is not None and design.symbolic.kinematics is not None:
+            raise NotImplementedError(
+                f"{design.name}: closure equations with symbolic link lengths are not supported; use "
+                "balance_conditions(parametric=False) or balance_report()")
+        syms = design.kinematics.symbols()
+        e, S, C = _trig_polynomial(design, potential_energy_symbolic(design, parametric), syms)
+        gens = list(S) + list(C)
+        G = sp.groebner(_constraints(design, syms, S, C), *gens, order="grevlex")
+        _check_necessary(design, G, gens, max(sp.Poly(e, *gens).total_degree(), 1))
+        _, rem = sp.reduced(e, list(G.exprs), *gens, order="grevlex")
+        design._sym_cache[key] = _coefficient_dict(sp.Poly(rem, *gens), gens, syms, S, C,
+                                                   parametric and design.symbolic is not None)
+    return dict(design._sym_cache[key])
+
+
+def _condition_coefficients(design, parametric: bool) -> dict:
+    if symbols_are_independent(design.kinematics):
+        return trig_coefficients(design, parametric)
+    return constrained_coefficients(design, parametric)
 
 
 def balance_conditions(design, parametric: bool = True) -> list:
     """The equations that make the potential energy constant.
 
-    Every coefficient of a non-constant trigonometric term of the energy (see
-    :meth:`trig_coefficients`) set to zero. For a closed loop written through its
-    joints these conditions are sufficient; they are also necessary for open chains.
+    Every coefficient of a non-constant trigonometric term of the energy set to zero:
+    of :func:`trig_coefficients` when the symbols are independent coordinates (open
+    chains; relaxed models, whose conditions are those of the relaxed linkage and so
+    sufficient for the real one), of :func:`constrained_coefficients` (the energy
+    reduced modulo the loop-closure equations) otherwise. Either way a balanced design
+    satisfies them.
 
     Returns
     -------
     list of sympy.Eq
+
+    Raises
+    ------
+    NotImplementedError
+        When no exact conditions can be derived (see :func:`constrained_coefficients`,
+        :func:`trig_coefficients`); ``balance_report()`` still checks the design.
 
     Examples
     --------
@@ -158,7 +330,7 @@ def balance_conditions(design, parametric: bool = True) -> list:
     import sympy as sp
 
     eqs = []
-    for term, coeff in trig_coefficients(design, parametric).items():
+    for term, coeff in _condition_coefficients(design, parametric).items():
         if term == 1:
             continue
         expr = sp.factor(coeff) if parametric and design.symbolic is not None else coeff
@@ -173,18 +345,29 @@ def balance_conditions(design, parametric: bool = True) -> list:
 def conditions_residual(design) -> float:
     """Largest balance-condition coefficient of this design's numbers, relative to its scale.
 
-    Substitutes the design's values into :meth:`balance_conditions` (parametric when
+    Substitutes the design's values into :func:`balance_conditions` (parametric when
     the method has symbols). Near zero (round-off) for a balanced design.
 
     Returns
     -------
     float
+
+    Raises
+    ------
+    NotImplementedError
+        As :func:`balance_conditions`.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> conditions_residual(bl.catalog()["deepak_watt_prototype"]()) < 1e-9
+    True
     """
     import sympy as sp
 
     values = design.symbolic.values if design.symbolic is not None else {}
     worst = 0.0
-    for term, coeff in trig_coefficients(design, True).items():
+    for term, coeff in _condition_coefficients(design, True).items():
         if term == 1:
             continue
         worst = max(worst, abs(float(sp.sympify(coeff).subs(values).evalf())))

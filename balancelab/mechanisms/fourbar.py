@@ -167,6 +167,7 @@ class FourBarKinematics(Kinematics):
         self.nbodies = 4
         self.names = ("theta",)
         self.symbol_bodies = (1, 3) if symbolic == "loop" else (1, 2, 3)
+        self.independent_symbols = symbolic == "relaxed"  # the loop's crank and rocker angles are tied
         check_assembly(self.r2, self.r3, self.r4, self.r1)
         self.q_range = self._crank_range(circuit)
 

@@ -39,6 +39,12 @@ class PeaucellierKinematics(Kinematics):
 
     The paper's symbols are kept as attributes: ``d``, ``l``, ``s``.
 
+    Reach: ``|OC| = 2 d cos(phi/2)`` must lie in ``[l - s, l + s]`` for the loop to close.
+    ``phi_max`` bounds ``|phi|`` from ``|OC| >= l - s``. A crank longer than ``(l + s)/2``
+    puts ``C`` out of reach near ``phi = 0``: the poses with ``|phi| < phi_min`` (``phi_min > 0``
+    only then) are unreachable and ``reachable`` is false there, so the working range is
+    ``phi_min <= |phi| <= phi_max`` (two intervals, and ``P`` cannot cross the x-axis).
+
     Examples
     --------
     >>> kin = PeaucellierKinematics(0.22326, 0.7505, 0.363)
@@ -59,8 +65,29 @@ class PeaucellierKinematics(Kinematics):
         self.names = ("phi",)
         self.symbol_bodies = (1, 2, 3, 6, 7)
         self.phi_max = 2 * math.acos((self.l - self.s) / (2 * self.d))
+        self.phi_min = 2 * math.acos(min(1.0, (self.l + self.s) / (2 * self.d)))
         self.q_range = np.array([[-self.phi_max, self.phi_max]])
         self.line_x = (self.l ** 2 - self.s ** 2) / (2 * self.d)
+
+    #: whether the sympy symbols (crank, arms 2 and 3, sides 6 and 7) are independent coordinates
+    #: of the relaxed linkage (see :func:`balancelab.core.symbolic.symbols_are_independent`)
+    independent_symbols = True
+
+    @property
+    def travel(self) -> float:
+        """Length (m) of the part of the line ``x = line_x`` that ``P`` reaches.
+
+        ``|OP| = (l^2 - s^2)/|OC|`` runs over ``[l - s, l + s]``; when the line passes closer
+        to ``O`` than ``l - s`` (a long crank) the points near the x-axis are out of reach.
+
+        Examples
+        --------
+        >>> round(PeaucellierKinematics(0.22326, 0.7505, 0.363).travel, 4)
+        1.1065
+        """
+        outer = math.sqrt((self.l + self.s) ** 2 - self.line_x ** 2)
+        inner = math.sqrt(max((self.l - self.s) ** 2 - self.line_x ** 2, 0.0))
+        return 2 * (outer - inner)
 
     def poses(self, q):
         q = np.asarray(q, dtype=float)
@@ -68,7 +95,8 @@ class PeaucellierKinematics(Kinematics):
         d, l, s = self.d, self.l, self.s
         cx, cy = d + d * np.cos(phi), d * np.sin(phi)
         oc = np.hypot(cx, cy)
-        ok = (np.abs(phi) < self.phi_max) & (oc > 0)
+        # the loop closes only for l - s <= |OC| <= l + s (|phi| <= phi_max and |phi| >= phi_min)
+        ok = (np.abs(phi) < self.phi_max) & (oc > 0) & (oc <= (l + s) * (1 + 1e-12))
         oc_safe = np.where(oc > 0, oc, 1.0)
         op = (l * l - s * s) / oc_safe
         px, py = op * cx / oc_safe, op * cy / oc_safe

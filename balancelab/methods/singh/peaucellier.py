@@ -8,12 +8,14 @@ on the vertical line ``x = (l^2 - s^2) / (2 d)``: the inversion ``OC . OP = l^2 
 Balancing (the paper's construction): the weights of bodies 4 and 5 are split between
 their end joints; the crank then is a lever carrying ``W1`` at its midpoint and
 ``(W4 + W5)/2`` at ``C``, balanced by one ZFL spring with minimum preload (eqs 18-20).
-Bodies 2-6 and 3-7 are two identical 2R arms (the board's load ``Wb`` split between them),
-each balanced by two ZFL springs on its second body only: with ``a_x2 = -a_x3`` and the
-minimum-preload anchors of eqs 29-31, eq. 51 with zero left side gives
-``k2 = k3 = (W_1' p_x1' + W_2' l) / (2 l^2)`` and ``a_x2 = l sqrt(W_2' p_x2' / (W_1' p_x1' + W_2' l))``
-(primes: the 2R's own loads). Each part is balanced for every value of its own angles,
-so the whole linkage is balanced.
+Bodies 2-6 (side ``D``) and 3-7 (side ``E``) are two 2R arms (the board's load ``Wb``
+split between them), each balanced by two ZFL springs on its second body only: with
+``a_x2 = -a_x3`` and the minimum-preload anchors of eqs 29-31, eq. 51 with zero left side
+gives ``k2 = k3 = (W_1' p_x1' + W_2' l) / (2 l^2)`` and
+``a_x2 = l sqrt(W_2' p_x2' / (W_1' p_x1' + W_2' l))`` (primes: the 2R's own loads; see
+:func:`arm_2r_springs`). Each side gets its own springs from its own weights (``W2, W4, W6``
+for ``D``; ``W3, W5, W7`` for ``E``); with the paper's equal pairs they coincide. Each part
+is balanced for every value of its own angles, so the whole linkage is balanced.
 
 Assumed geometry: the paper's Figs 8-10 are not in its text. With the printed loads, the
 values here reproduce every printed spring number (``k1 = 45.88``, ``k2 = k3 = 33.02`` N/m,
@@ -34,7 +36,45 @@ from ...core.elements import Joint, Load, Spring
 from ...core.validation import finite_real, finite_reals, planar_point
 from ...mechanisms.peaucellier import PEAUCELLIER_BODIES, PeaucellierKinematics
 
-__all__ = ["peaucellier_board"]
+__all__ = ["arm_2r_springs", "peaucellier_board"]
+
+
+def arm_2r_springs(arm_weight: float, rhombus_weight: float, side_weight: float, board_weight: float,
+                   arm_com: float, arm: float, side: float) -> tuple[float, float, float, float]:
+    """Springs of one side of the board: the 2R arm ``O-D-P`` (or ``O-E-P``) (eqs 29-34, 51).
+
+    The first body is the long arm (its weight at ``arm_com`` from ``O``, half of its
+    rhombus side 4 or 5 at its tip), the second the side 6 or 7 (its weight at its
+    midpoint, half of the board at ``P``). Two equal ZFL springs from anchors on the
+    vertical through ``O`` to the points ``+-a_x`` of the second body, with the
+    minimum-preload anchors ``b_y = l +- a_x``, balance it for all its angles.
+
+    Parameters
+    ----------
+    arm_weight, rhombus_weight, side_weight : float
+        Weights (N) of the long arm, of the rhombus side hinged at its tip, of the outer side.
+    board_weight : float
+        The board's whole load ``Wb`` (N); half of it acts on this side.
+    arm_com, arm, side : float
+        Centre of mass of the arm from ``O``, arm length ``l``, side length ``s`` (m).
+
+    Returns
+    -------
+    (float, float, float, float)
+        ``(k, a_x, b_y2, b_y3)``: the rate of both springs (N/m), the attachment (m) and
+        the two anchor heights (m).
+
+    Examples
+    --------
+    >>> k, ax, by2, by3 = arm_2r_springs(11.43, 4.78, 7.62, 72.03, 0.232, 0.7505, 0.363)
+    >>> round(k, 2), round(ax, 3), round(by2, 3), round(by3, 3)
+    (33.02, 0.468, 1.218, 0.283)
+    """
+    first = arm_weight * arm_com + (rhombus_weight / 2 + side_weight + board_weight / 2) * arm
+    second = (side_weight / 2 + board_weight / 2) * side
+    k = first / (2 * arm * arm)
+    a_x = arm * math.sqrt(second / first)
+    return k, a_x, arm + a_x, arm - a_x
 
 
 @example("peaucellier_board", "Peaucellier-Lipkin writing board (Singh Sec. III.B: k1 = 45.88, "
@@ -61,6 +101,10 @@ def peaucellier_board(weights=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), boar
     Returns
     -------
     Design
+        Its ``parameters`` hold the springs of both sides: ``k2D, k3D, a_x2D, a_x3D, b_y2D,
+        b_y3D`` and the same with ``E``; ``k2, k3, a_x2, a_x3, b_y2, b_y3`` are side ``D``'s
+        (the paper's, which has equal sides). ``travel`` is the length (m) of the line that
+        ``P`` reaches (see :attr:`PeaucellierKinematics.travel`).
 
     Examples
     --------
@@ -79,27 +123,26 @@ def peaucellier_board(weights=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), boar
     # lever: crank with W1 at its midpoint and half of W4 and W5 at C (eqs 18-20)
     moment1 = W[0] * d / 2 + (W[3] + W[4]) / 2 * d
     k1 = moment1 / a_x1 ** 2
-    # each 2R: first body = arm (W2 at p_arm, W4/2 at D), second = side (W6 at s/2, Wb/2 at P)
-    first = W[1] * p_arm + (W[3] / 2 + W[5] + Wb / 2) * l
-    second = W[5] * s / 2 + Wb / 2 * s
-    k2 = first / (2 * l * l)
-    ax2 = l * math.sqrt(second / first)
-    by2, by3 = ax2 + l, -ax2 + l
+    # each side its own 2R: arm (own weight at p_arm, half of its rhombus side 4 or 5 at D or E),
+    # then side 6 or 7 (own weight at s/2, Wb/2 at P)
+    sides = {"D": arm_2r_springs(W[1], W[3], W[5], Wb, p_arm, l, s),
+             "E": arm_2r_springs(W[2], W[4], W[6], Wb, p_arm, l, s)}
     A = (d, 0.0)
-    loads = [Load(1, (d / 2, 0.0), (0.0, -W[0]), "W1", kind="weight"),
-             Load(2, (p_arm, 0.0), (0.0, -W[1]), "W2", kind="weight"),
-             Load(3, (p_arm, 0.0), (0.0, -W[2]), "W3", kind="weight"),
-             Load(4, (s / 2, 0.0), (0.0, -W[3]), "W4", kind="weight"),
-             Load(5, (s / 2, 0.0), (0.0, -W[4]), "W5", kind="weight"),
-             Load(6, (s / 2, 0.0), (0.0, -W[5]), "W6", kind="weight"),
-             Load(7, (s / 2, 0.0), (0.0, -W[6]), "W7", kind="weight")]
+    loads = [Load(1, (d / 2, 0.0), (0.0, -W[0]), "W1", kind="weight")]
+    loads += [Load(b, (p_arm if b < 4 else s / 2, 0.0), (0.0, -W[b - 1]), f"W{b}", kind="weight")
+              for b in range(2, 8)]
     if Wb > 0:  # the board hangs at P, the joint of sides 6 and 7: half on each side
         loads += [Load(6, (s, 0.0), (0.0, -Wb / 2), "Wb/2", kind="force"),
                   Load(7, (s, 0.0), (0.0, -Wb / 2), "Wb/2", kind="force")]
     springs = [Spring(k1, 0.0, (0, (A[0], a_x1)), (1, (a_x1, 0.0)), name="k1")]
+    per_side = {}
     for body, tag in ((6, "D"), (7, "E")):
-        springs.append(Spring(k2, 0.0, (0, (0.0, by2)), (body, (ax2, 0.0)), name=f"k2{tag}"))
-        springs.append(Spring(k2, 0.0, (0, (0.0, by3)), (body, (-ax2, 0.0)), name=f"k3{tag}"))
+        k, ax, by2, by3 = sides[tag]
+        springs.append(Spring(k, 0.0, (0, (0.0, by2)), (body, (ax, 0.0)), name=f"k2{tag}"))
+        springs.append(Spring(k, 0.0, (0, (0.0, by3)), (body, (-ax, 0.0)), name=f"k3{tag}"))
+        per_side.update({f"k2{tag}": k, f"k3{tag}": k, f"a_x2{tag}": ax, f"a_x3{tag}": -ax,
+                         f"b_y2{tag}": by2, f"b_y3{tag}": by3})
+    k2, ax2, by2, by3 = sides["D"]
     joints = [Joint(0, A, 1, (0.0, 0.0)), Joint(0, (0.0, 0.0), 2, (0.0, 0.0)),
               Joint(0, (0.0, 0.0), 3, (0.0, 0.0)), Joint(1, (d, 0.0), 4, (0.0, 0.0)),
               Joint(1, (d, 0.0), 5, (0.0, 0.0)), Joint(2, (l, 0.0), 4, (s, 0.0)),
@@ -110,5 +153,5 @@ def peaucellier_board(weights=(6.88, 11.43, 11.43, 4.78, 4.78, 7.62, 7.62), boar
                           "E": (3, (l, 0.0)), "P": (6, (s, 0.0))},
                   parameters={"k1": k1, "a_x1": a_x1, "b_x1": 0.0, "b_y1": a_x1, "k2": k2, "k3": k2,
                               "a_x2": ax2, "a_x3": -ax2, "b_y2": by2, "b_y3": by3,
-                              "line_x": kin.line_x, "travel": 2 * math.sqrt((l + s) ** 2 - kin.line_x ** 2)},
+                              **per_side, "line_x": kin.line_x, "travel": kin.travel},
                   reference="Singh & Ananthasuresh, Sec. III.B (eqs 18-20, 29-34, 51)")
