@@ -78,10 +78,12 @@ def test_peaucellier_output_is_a_vertical_straight_line():
     assert np.ptp(P[:, 0, 1]) < d.parameters["travel"]
 
 
-def test_free_choices_table_2():
+def test_free_choices_correct_table_2():
+    # Singh's Table II prints 4N - 2; the rank of the conditions gives 3N - 1 (notes on the sources)
     rows = [bl.singh.free_choice_count(n) for n in (1, 2, 3, 4)]
     assert [(r["springs"], r["parameters"], r["equations"], r["free"]) for r in rows] == [
-        (1, 5, 2, 2), (3, 15, 6, 6), (5, 25, 10, 10), (7, 35, 14, 14)]
+        (1, 5, 2, 2), (3, 15, 6, 5), (5, 25, 10, 8), (7, 35, 14, 11)]
+    assert [r["paper_free"] for r in rows] == [2, 6, 10, 14]
     with pytest.raises(ValueError, match="N must be"):
         bl.singh.free_choice_count(0)
 

@@ -2,8 +2,9 @@
 
 Three ZFL springs, one to link 1 and two to link 2, simplified (eqs 21-28) and general
 (eqs 35-49), with minimum preload (eqs 29-34, 42-49); the two-spring variant (eq. 50);
-the free-choice count (Table II). Coordinates: absolute link angles ``theta_1``,
-``theta_2``; link 2 is pivoted at distance ``l`` on link 1.
+the free-choice count (Table II, recounted from the rank of the conditions in
+:mod:`.counting`). Coordinates: absolute link angles ``theta_1``, ``theta_2``; link 2 is
+pivoted at distance ``l`` on link 1.
 """
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from ...core.elements import Load, Spring, SymbolicParts
 from ...core.validation import finite_real, finite_reals, planar_points
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.chain import TWO_TURNS, serial_2r_joints, serial_2r_kinematics
+from .counting import conditions_rank
 
 __all__ = ["serial_2r_simplified", "serial_2r_min_preload", "serial_2r_two_springs", "max_work_angle",
            "free_choice_count"]
@@ -322,12 +324,22 @@ def serial_2r_two_springs(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
 
 
 def free_choice_count(N: int) -> dict:
-    """Free choices left after balancing with minimum preload (Singh Table II).
+    """Free choices left after balancing with minimum preload, from the rank of the conditions.
 
-    A linkage of ``N`` bodies with one body pivoted to the ground needs ``2N - 1`` ZFL
-    springs (one on the grounded body, two on each other body) governed by ``4N - 2``
-    balance equations; each spring has five parameters (``k`` and four anchor
-    coordinates) and minimum preload adds one zero-length condition per spring.
+    A chain of ``N`` bodies with body 1 pivoted on the ground needs ``2N - 1`` ZFL springs
+    from the ground (one to body 1, two to each other body) of five parameters each
+    (``k`` and both end points). The conditions are the ``4N - 2`` independent balance
+    equations and, for minimum preload, the zero length of every spring at the
+    maximum-work configuration: two scalar equations a spring, ``2(2N - 1)``. ``N`` of
+    them are implied by the others (with every spring at zero length the springs'
+    energy is stationary at that configuration, and so is the loads'), so the rank is
+    ``7N - 4`` and ``3N - 1`` choices remain. The rank is computed, not assumed:
+    :func:`balancelab.methods.singh.counting.conditions_rank` at an exact generic solution.
+
+    Singh & Ananthasuresh's Table II prints ``4N - 2``: it counts one zero-length
+    condition per spring and none implied, ``5(2N - 1) - (4N - 2) - (2N - 1)``. For the
+    2R that is 6 ("a_x1..a_x3 and the three a_y"), but ``k2 a_y2 + k3 a_y3 = 0`` is one of
+    the balance conditions, so only 5 are free.
 
     Parameters
     ----------
@@ -337,18 +349,23 @@ def free_choice_count(N: int) -> dict:
     Returns
     -------
     dict
-        ``springs``, ``parameters``, ``equations``, ``min_preload_conditions`` and
-        ``free`` (= parameters - equations - min_preload_conditions).
+        ``N``, ``springs``, ``parameters`` (unknowns), ``equations`` (independent balance
+        equations), ``min_preload_conditions`` (two a spring), ``implied`` (=
+        equations + min_preload_conditions - rank), ``rank``, ``free`` (= parameters -
+        rank) and ``paper_free`` (Table II's ``4N - 2``).
 
     Examples
     --------
-    >>> free_choice_count(2)["free"]
-    6
+    >>> c = free_choice_count(2)
+    >>> c["rank"], c["free"], c["paper_free"]
+    (10, 5, 6)
     """
     if isinstance(N, bool) or not isinstance(N, (int, np.integer)) or N < 1:
         raise ValueError(f"N must be a whole number of bodies >= 1, got {N!r}")
+    N = int(N)
+    r = conditions_rank(N)
     springs = 2 * N - 1
-    params = 5 * springs
-    equations = 2 + 4 * (N - 1)
-    return {"N": int(N), "springs": springs, "parameters": params, "equations": equations,
-            "min_preload_conditions": springs, "free": params - equations - springs}
+    conditions = r["balance_rank"] + r["zero_length_rank"]
+    return {"N": N, "springs": springs, "parameters": r["unknowns"], "equations": r["balance_rank"],
+            "min_preload_conditions": r["zero_length_rank"], "implied": conditions - r["rank"],
+            "rank": r["rank"], "free": r["free"], "paper_free": 4 * N - 2}
