@@ -295,7 +295,9 @@ class Drawing:
                          + ([self.label_dots] if self.label_dots is not None else []))
         if self.set_limits:
             self._apply_limits()
-        self.ax.set_aspect("equal", adjustable="box" if self.set_limits else "datalim")
+            self.ax.set_aspect("equal", adjustable="box")
+        elif self.ax.get_aspect() != 1.0:  # a rebuild keeps the limits and adjustable its caller set
+            self.ax.set_aspect("equal", adjustable="datalim")
         self.ax.set_xlabel("x (m)")
         self.ax.set_ylabel("y (m)")
         self._place(W)

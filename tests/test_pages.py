@@ -1,0 +1,107 @@
+"""Pages for readers: checks live in hidden cells, and the build refuses stderr and bare booleans.
+
+The guard is ``book/_ext/page_guard.py``; the mini-book test builds a one-page book with it
+(slow: it starts a kernel and Sphinx, about 20 s).
+"""
+from __future__ import annotations
+
+import ast
+import re
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+PAGES = ["intro", "ch1_counterweights", "ch2_zfl_springs", "ch3_building_zfl", "ch4_serial",
+         "ch5_fourbar", "ch6_scissors_peaucellier", "notes_on_sources"]
+CELL = re.compile(r"^```\{code-cell\}[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
+HIDING = ("remove-cell", "remove_cell", "remove-input", "remove_input")
+
+
+def code_cells(text: str) -> list[tuple[bool, str]]:
+    """(visible, code) of every code cell of a MyST notebook page."""
+    cells = []
+    for m in CELL.finditer(text):
+        body = m.group(1)
+        options = ""
+        if body.startswith("---\n"):
+            end = body.index("\n---\n", 3)
+            options, body = body[:end], body[end + 5:]
+        else:
+            head = re.match(r"(?:^:[^\n]*\n)*", body).group(0)
+            options, body = head, body[len(head):]
+        cells.append((not any(tag in options for tag in HIDING), body))
+    return cells
+
+
+def test_code_cells_are_found_with_their_visibility():
+    text = ("```{code-cell} ipython3\nx = 1\n```\n\n```{code-cell} ipython3\n:tags: [remove-cell]\n"
+            "assert x == 1\n```\n\n```{code-cell} ipython3\n---\ntags: [remove-input]\n---\nprint(x)\n```\n")
+    assert code_cells(text) == [(True, "x = 1\n"), (False, "assert x == 1\n"), (False, "print(x)\n")]
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_no_visible_cell_asserts(page):
+    cells = code_cells((ROOT / "book" / f"{page}.md").read_text())
+    assert cells or page in ("intro",), f"{page}: no code cells found"
+    for visible, code in cells:
+        if not visible:
+            continue
+        asserts = [n.lineno for n in ast.walk(ast.parse(code)) if isinstance(n, ast.Assert)]
+        assert not asserts, f"{page}: a visible cell asserts (move the check into a hidden cell):\n{code}"
+        assert "printed_digits" not in code, f"{page}: a visible cell compares printed digits:\n{code}"
+
+
+def test_guard_is_registered():
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    assert cfg["sphinx"]["local_extensions"]["page_guard"] == "book/_ext"
+    assert (ROOT / "book" / "_ext" / "page_guard.py").is_file()
+
+
+def _mini_book(tmp_path: Path, body: str) -> subprocess.CompletedProcess:
+    """Build a one-page book with the course's execution settings and the page guard."""
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    mini = {"title": "t", "only_build_toc_files": True, "execute": dict(cfg["execute"]),
+            "sphinx": {"extra_extensions": cfg["sphinx"]["extra_extensions"],
+                       "local_extensions": {"page_guard": str(ROOT / "book" / "_ext")}}}
+    mini["execute"]["cache"] = str(tmp_path / "cache")
+    (tmp_path / "_config.yml").write_text(yaml.safe_dump(mini))
+    (tmp_path / "_toc.yml").write_text("format: jb-book\nroot: page\n")
+    header = ("---\njupytext:\n  text_representation:\n    extension: .md\n    format_name: myst\n"
+              "kernelspec:\n  display_name: Python 3\n  language: python\n  name: python3\n---\n\n")
+    (tmp_path / "page.md").write_text(header + textwrap.dedent(body))
+    code = ("import sys; from jupyter_book.sphinx import build_sphinx; "
+            f"sys.exit(build_sphinx({str(tmp_path)!r}, {str(tmp_path / '_build/html')!r}, noconfig=True, "
+            f"path_config={str(tmp_path / '_config.yml')!r}, confoverrides={{'external_toc_path': "
+            f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
+            "warningiserror=True, keep_going=True, quiet=True))")
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+
+
+@pytest.mark.slow
+def test_a_cell_writing_to_stderr_or_showing_a_bare_boolean_fails_the_build(tmp_path):
+    r = _mini_book(tmp_path, """
+        # Page
+
+        ```{code-cell} ipython3
+        print("k = 500 N/m")
+        ```
+
+        ```{code-cell} ipython3
+        import sys
+        print("something went wrong", file=sys.stderr)
+        ```
+
+        ```{code-cell} ipython3
+        1 + 1 == 2
+        ```
+        """)
+    out = r.stdout + r.stderr
+    assert r.returncode != 0, out
+    assert "page 'page', code cell 2" in out and "it writes to stderr: something went wrong" in out, out
+    assert "page 'page', code cell 3" in out and "its result is a bare True" in out, out
+    assert "code cell 1 " not in out, out
