@@ -1,0 +1,191 @@
+"""The site's navigation works at every width, in a real browser.
+
+The visible "☰" button (article header) must open the table of contents as a drawer below
+992 px and collapse / restore the sidebar above; the visible "Contents" button must open the
+page's contents below 1200 px. A chapter link clicked in the drawer or sidebar must load that
+chapter, and no page may log a console error.
+
+Tests an existing ``_build/html`` (``tests/test_book.py``, which sorts first, builds it once per
+session; ``python scripts/build_book.py`` builds it by hand) and skips when there is none. Needs
+Debian's ``chromium``, driven through Python playwright.
+"""
+from __future__ import annotations
+
+import re
+import shutil
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SITE = ROOT / "_build" / "html"
+SHOTS = ROOT / "_build" / "screenshots"
+CHROMIUM = shutil.which("chromium")
+START = "book/ch1_counterweights.html"   # the page the reader is on
+TARGET = "book/ch5_fourbar.html"         # the chapter picked in the table of contents
+TIMEOUT_MS = 15_000
+
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.browser,
+    pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (the setup script "
+                                                "installs it with apt: apt-get install chromium)"),
+]
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def _title(rel: str) -> str:
+    """The ``<title>`` of a built page, as the browser shows it."""
+    import html
+
+    match = re.search(r"<title>(.*?)</title>", (SITE / rel).read_text(encoding="utf-8"), re.S)
+    assert match, f"{rel} has no <title>"
+    return html.unescape(match.group(1)).strip()
+
+
+@pytest.fixture(scope="module")
+def site() -> Path:
+    if not (SITE / "index.html").is_file():
+        pytest.skip("no built site in _build/html: run tests/test_book.py first (it builds the book) "
+                    "or `python scripts/build_book.py`")
+    for rel in (START, TARGET):
+        assert (SITE / rel).is_file(), f"the built site has no {rel}"
+    return SITE
+
+
+@pytest.fixture(scope="module")
+def server(site):
+    port = _free_port()
+    proc = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
+                             "--directory", str(site)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    url = f"http://127.0.0.1:{port}/"
+    try:
+        deadline = time.monotonic() + 30
+        while True:
+            try:
+                with urllib.request.urlopen(url + START, timeout=2) as r:
+                    assert r.status == 200
+                break
+            except OSError:
+                if proc.poll() is not None or time.monotonic() > deadline:
+                    pytest.fail(f"python -m http.server did not answer on {url}")
+                time.sleep(0.2)
+        yield url
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
+
+
+@pytest.fixture(scope="module")
+def browser():
+    sync_api = pytest.importorskip("playwright.sync_api")
+    with sync_api.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=["--headless", "--no-sandbox", "--disable-gpu",
+                                                               "--disable-background-networking"])
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def open_page(browser, server):
+    """Open :data:`START` at a width; yield ``(page, errors)`` and check no console error at the end."""
+    contexts, logs = [], []
+
+    def _open(width: int):
+        ctx = browser.new_context(viewport={"width": width, "height": 800})
+        contexts.append(ctx)
+        page = ctx.new_page()
+        page.set_default_timeout(TIMEOUT_MS)
+        errors: list[str] = []
+        logs.append((width, errors))
+        page.on("console", lambda m: errors.append(f"console: {m.text} {m.location.get('url', '')}")
+                if m.type == "error" else None)
+        page.on("pageerror", lambda e: errors.append(f"uncaught: {e}"))
+        page.on("response", lambda r: errors.append(f"{r.status} {r.url}") if r.status >= 400 else None)
+        page.goto(server + START, wait_until="load")
+        return page
+
+    yield _open
+    for ctx in contexts:
+        ctx.close()
+    for width, errors in logs:
+        assert not errors, f"at {width} px: " + "\n".join(errors)
+
+
+def _visible_button(page, kind: str):
+    """The one visible ``.primary-toggle`` / ``.secondary-toggle`` (the themes render hidden copies)."""
+    buttons = page.locator(f"button.{kind}").filter(visible=True)
+    assert buttons.count() == 1, f"{buttons.count()} visible .{kind} buttons"
+    return buttons
+
+
+def _follow_chapter_link(page, container) -> None:
+    from playwright.sync_api import expect
+
+    link = container.locator(f'a[href$="{TARGET.split("/")[-1]}"]').first
+    expect(link).to_be_visible()
+    box = link.bounding_box()
+    width = page.viewport_size["width"]
+    assert box is not None and 0 <= box["x"] and box["x"] + box["width"] <= width, \
+        f"the chapter link is off screen: {box}"
+    link.click()
+    expect(page).to_have_title(_title(TARGET))
+    assert page.url.endswith(TARGET)
+
+
+@pytest.mark.parametrize("width", [390, 900])
+def test_menu_button_opens_the_table_of_contents_as_a_drawer(open_page, width):
+    from playwright.sync_api import expect
+
+    page = open_page(width)
+    sidebar = page.locator("#pst-primary-sidebar")
+    drawer = page.locator("#pst-primary-sidebar-modal")
+    expect(sidebar).to_be_hidden()
+    expect(drawer).to_be_hidden()
+    _visible_button(page, "primary-toggle").click()
+    expect(drawer).to_be_visible()
+    expect(drawer.locator("nav.bd-docs-nav")).to_be_visible()
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(SHOTS / f"nav_drawer_{width}.png"))
+    _follow_chapter_link(page, drawer)
+
+
+def test_menu_button_collapses_and_restores_the_sidebar_on_a_desktop(open_page):
+    from playwright.sync_api import expect
+
+    page = open_page(1280)
+    sidebar = page.locator("#pst-primary-sidebar")
+    expect(sidebar).to_be_visible()
+    button = _visible_button(page, "primary-toggle")
+    button.click()
+    expect(sidebar).to_be_hidden()
+    expect(page.locator("#pst-primary-sidebar-modal")).to_be_hidden()   # no drawer on a desktop
+    button.click()
+    expect(sidebar).to_be_visible()
+    _follow_chapter_link(page, sidebar)
+
+
+def test_contents_button_opens_the_page_contents_on_a_phone(open_page):
+    from playwright.sync_api import expect
+
+    page = open_page(390)
+    drawer = page.locator("#pst-secondary-sidebar-modal")
+    expect(drawer).to_be_hidden()
+    _visible_button(page, "secondary-toggle").click()
+    expect(drawer).to_be_visible()
+    link = drawer.locator("a.nav-link[href^='#']").first
+    expect(link).to_be_visible()
+    anchor = link.get_attribute("href")
+    link.click()
+    page.wait_for_url(re.compile(re.escape(START) + re.escape(anchor) + "$"))
