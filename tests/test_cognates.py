@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from balancelab import deepak as cg
@@ -201,6 +201,8 @@ def test_random_cognate_curves_coincide(fb):
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(fourbars(), st.floats(-0.5, 0.5), st.floats(-0.5, 0.5), st.sampled_from(OPTIONS[2:]))
+@example(cg.FourBar((0.0, 0.0), (0.1446657093927765, 0.0), 0.5, 0.3005290317986784, 0.5, (0.0, 0.21875)),
+         0.0, 0.25, (3, "B", "B"))  # the focal pivot falls on a base pivot: infeasible, not a crash
 def test_random_invariant_ratio(fb, kx, ky, option):
     t, U, W = option
     tri = cg.cognate_triangle(fb)

@@ -99,6 +99,27 @@ KERNEL_READY = """() => {
 }"""
 
 
+#: true once every code cell of the open notebook has run and its kernel is idle again
+ALL_CELLS_RUN = """() => {
+    const app = window.jupyterapp;
+    const panel = app && app.shell.currentWidget;
+    const kernel = panel && panel.sessionContext.session && panel.sessionContext.session.kernel;
+    if (!kernel || kernel.status !== "idle") return false;
+    const cells = panel.content.widgets.filter(c => c.model.type === "code");
+    return cells.length > 0 && cells.every(c => c.model.executionCount !== null);
+}"""
+#: the text of the first explorer's report, read afresh each time (widgets re-render it)
+REPORT_TEXT = """() => {
+    const el = document.querySelector(".widget-vbox .widget-html-content");
+    return el ? el.textContent : "";
+}"""
+KERNEL_IDLE = """() => {
+    const panel = window.jupyterapp.shell.currentWidget;
+    const kernel = panel.sessionContext.session && panel.sessionContext.session.kernel;
+    return !!kernel && kernel.status === "idle";
+}"""
+
+
 def _run_all_once(page) -> None:
     """Run every cell, exactly once, when the notebook's kernel is connected and idle."""
     page.wait_for_function(KERNEL_READY, timeout=120_000)
@@ -123,18 +144,18 @@ def test_lab_explorer_reacts_to_a_slider(jupyterlab):
             _run_all_once(page)
             explorer = page.locator(".widget-vbox").first
             try:
-                explorer.wait_for(timeout=180_000)
+                page.wait_for_function(ALL_CELLS_RUN, timeout=180_000)
                 image = explorer.locator("img").first
                 image.wait_for(timeout=60_000)
-                report = explorer.locator(".widget-html-content").first
-                page.wait_for_function("el => el.textContent.includes('balanced')",
-                                       arg=report.element_handle(), timeout=60_000)
+                page.wait_for_function(f"() => ({REPORT_TEXT})().includes('lamp arm')", timeout=60_000)
             except Exception as err:  # noqa: BLE001 - any wait that times out is the failure
-                _fail_with_screenshot(page, f"the explorer did not appear: {err}")
+                _fail_with_screenshot(page, f"the notebook did not run to its explorer: {err}")
             explorer.scroll_into_view_if_needed()
             page.wait_for_function("img => img.complete && img.naturalWidth > 0", arg=image.element_handle(),
                                    timeout=30_000)
-            text_before = report.inner_text()
+            text_before = page.wait_for_function(
+                f"() => {{ const t = ({REPORT_TEXT})(); return t.includes('lamp arm') ? t : null; }}",
+                timeout=30_000).json_value()
             img_before = image.screenshot()
             src_before = image.get_attribute("src")
             page.screenshot(path=str(SHOTS / "before.png"))
@@ -147,13 +168,16 @@ def test_lab_explorer_reacts_to_a_slider(jupyterlab):
             handle.click()
             for _ in range(8):
                 handle.press("ArrowRight")
-            page.wait_for_function("([el, old]) => el.textContent !== old",
-                                   arg=[report.element_handle(), text_before], timeout=30_000)
+            page.wait_for_function(f"old => {{ const t = ({REPORT_TEXT})(); return t !== old && t.includes('lamp arm'); }}",
+                                   arg=text_before, timeout=30_000)
             page.wait_for_function("([el, old]) => el.getAttribute('src') !== old",
                                    arg=[image.element_handle(), src_before], timeout=30_000)
+            page.wait_for_function(KERNEL_IDLE, timeout=30_000)
             page.wait_for_function("img => img.complete && img.naturalWidth > 0", arg=image.element_handle(),
                                    timeout=30_000)
-            text_after = report.inner_text()
+            text_after = page.wait_for_function(
+                f"old => {{ const t = ({REPORT_TEXT})(); return t !== old && t.includes('lamp arm') ? t : null; }}",
+                arg=text_before, timeout=30_000).json_value()
             img_after = image.screenshot()
             page.screenshot(path=str(SHOTS / "after.png"))
         finally:

@@ -382,7 +382,10 @@ def kb_ratio_from_triangle(triangle: Sequence[Point], K: Point, technique: int =
         kb = np.array([abs(W[i] - L[i]) / ms[i] ** 2 for i in range(3)])
     else:
         Pc = as_complex(P)
-        kb = np.array([abs(W[i] - L[i]) / (ms[i] ** 2 * abs(W[i] - Pc)) for i in range(3)])
+        den = [ms[i] ** 2 * abs(W[i] - Pc) for i in range(3)]
+        if min(den) == 0:  # the focal pivot on a base pivot: no finite k_b (as cognate_family says)
+            return (math.nan,) * 3, case, P
+        kb = np.array([abs(W[i] - L[i]) / den[i] for i in range(3)])
     return tuple(float(v) for v in kb / kb.sum()), case, P
 
 
