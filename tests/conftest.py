@@ -2,8 +2,16 @@
 from __future__ import annotations
 
 import os
+import shutil
+import socket
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
 
 import numpy as np
+import pytest
+import yaml
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
@@ -66,3 +74,44 @@ def assert_symbolic_matches_numeric(design: Design, samples: int = 5) -> None:
     got = np.array([f(*v) for v in vals], dtype=float)
     want = design.potential_energy(q).total
     np.testing.assert_allclose(got, want, rtol=1e-9, atol=1e-9 * design.balance_report(n=100).scale)
+
+
+# ---------------------------------------------------------------- book and browser helpers
+ROOT = Path(__file__).resolve().parents[1]
+#: Debian's chromium (never a browser downloaded by playwright)
+CHROMIUM = shutil.which("chromium")
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking"]
+NEEDS_CHROMIUM = pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (the setup "
+                                                             "script installs it with apt: apt-get install chromium)")
+
+
+def free_port() -> int:
+    """A free TCP port on 127.0.0.1."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def build_mini_book(tmp_path: Path, body: str, local_extensions: dict | None = None):
+    """Build a one-page book with the course's execution and strictness settings.
+
+    ``local_extensions`` maps extension names to folders (e.g. the page guard in book/_ext).
+    Returns the finished ``subprocess.CompletedProcess`` of the build.
+    """
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    sphinx = {"extra_extensions": cfg["sphinx"]["extra_extensions"]}
+    if local_extensions:
+        sphinx["local_extensions"] = local_extensions
+    mini = {"title": "t", "only_build_toc_files": True, "execute": dict(cfg["execute"]), "sphinx": sphinx}
+    mini["execute"]["cache"] = str(tmp_path / "cache")
+    (tmp_path / "_config.yml").write_text(yaml.safe_dump(mini))
+    (tmp_path / "_toc.yml").write_text("format: jb-book\nroot: page\n")
+    header = ("---\njupytext:\n  text_representation:\n    extension: .md\n    format_name: myst\n"
+              "kernelspec:\n  display_name: Python 3\n  language: python\n  name: python3\n---\n\n")
+    (tmp_path / "page.md").write_text(header + textwrap.dedent(body))
+    code = ("import sys; from jupyter_book.sphinx import build_sphinx; "
+            f"sys.exit(build_sphinx({str(tmp_path)!r}, {str(tmp_path / '_build/html')!r}, noconfig=True, "
+            f"path_config={str(tmp_path / '_config.yml')!r}, confoverrides={{'external_toc_path': "
+            f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
+            "warningiserror=True, keep_going=True, quiet=True))")
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)

@@ -15,13 +15,14 @@ import re
 import shutil
 import subprocess
 import sys
-import textwrap
 import threading
 from pathlib import Path
 from urllib.parse import unquote, urljoin, urlsplit
 
 import pytest
 import yaml
+
+from conftest import build_mini_book
 
 ROOT = Path(__file__).resolve().parents[1]
 SITE = ROOT / "_build" / "html"
@@ -114,27 +115,8 @@ def test_chapters_have_exercises_with_executed_solutions(site):
         assert re.search(r'<figure[^>]*id="fig-', html), f"{ch}: no numbered figure"
 
 
-def _mini_book(tmp_path: Path, body: str) -> int:
-    """Build a one-page book with the course's execution and strictness settings."""
-    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
-    mini = {"title": "t", "only_build_toc_files": True, "execute": dict(cfg["execute"]),
-            "sphinx": {"extra_extensions": cfg["sphinx"]["extra_extensions"]}}
-    mini["execute"]["cache"] = str(tmp_path / "cache")
-    (tmp_path / "_config.yml").write_text(yaml.safe_dump(mini))
-    (tmp_path / "_toc.yml").write_text("format: jb-book\nroot: page\n")
-    header = ("---\njupytext:\n  text_representation:\n    extension: .md\n    format_name: myst\n"
-              "kernelspec:\n  display_name: Python 3\n  language: python\n  name: python3\n---\n\n")
-    (tmp_path / "page.md").write_text(header + textwrap.dedent(body))
-    code = ("import sys; from jupyter_book.sphinx import build_sphinx; "
-            f"sys.exit(build_sphinx({str(tmp_path)!r}, {str(tmp_path / '_build/html')!r}, noconfig=True, "
-            f"path_config={str(tmp_path / '_config.yml')!r}, confoverrides={{'external_toc_path': "
-            f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
-            "warningiserror=True, keep_going=True, quiet=True))")
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
-
-
 def test_a_cell_that_raises_fails_the_build(tmp_path):
-    r = _mini_book(tmp_path, """
+    r = build_mini_book(tmp_path, """
         # Page
 
         ```{code-cell} ipython3
@@ -147,7 +129,7 @@ def test_a_cell_that_raises_fails_the_build(tmp_path):
 
 
 def test_a_broken_reference_fails_the_build(tmp_path):
-    r = _mini_book(tmp_path, """
+    r = build_mini_book(tmp_path, """
         # Page
 
         See {numref}`fig-that-does-not-exist`.

@@ -7,13 +7,12 @@ from __future__ import annotations
 
 import ast
 import re
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
 import pytest
 import yaml
+
+from conftest import build_mini_book
 
 ROOT = Path(__file__).resolve().parents[1]
 PAGES = ["intro", "ch1_counterweights", "ch2_zfl_springs", "ch3_building_zfl", "ch4_serial",
@@ -62,29 +61,9 @@ def test_guard_is_registered():
     assert (ROOT / "book" / "_ext" / "page_guard.py").is_file()
 
 
-def _mini_book(tmp_path: Path, body: str) -> subprocess.CompletedProcess:
-    """Build a one-page book with the course's execution settings and the page guard."""
-    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
-    mini = {"title": "t", "only_build_toc_files": True, "execute": dict(cfg["execute"]),
-            "sphinx": {"extra_extensions": cfg["sphinx"]["extra_extensions"],
-                       "local_extensions": {"page_guard": str(ROOT / "book" / "_ext")}}}
-    mini["execute"]["cache"] = str(tmp_path / "cache")
-    (tmp_path / "_config.yml").write_text(yaml.safe_dump(mini))
-    (tmp_path / "_toc.yml").write_text("format: jb-book\nroot: page\n")
-    header = ("---\njupytext:\n  text_representation:\n    extension: .md\n    format_name: myst\n"
-              "kernelspec:\n  display_name: Python 3\n  language: python\n  name: python3\n---\n\n")
-    (tmp_path / "page.md").write_text(header + textwrap.dedent(body))
-    code = ("import sys; from jupyter_book.sphinx import build_sphinx; "
-            f"sys.exit(build_sphinx({str(tmp_path)!r}, {str(tmp_path / '_build/html')!r}, noconfig=True, "
-            f"path_config={str(tmp_path / '_config.yml')!r}, confoverrides={{'external_toc_path': "
-            f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
-            "warningiserror=True, keep_going=True, quiet=True))")
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
-
-
 @pytest.mark.slow
 def test_a_cell_writing_to_stderr_or_showing_a_bare_boolean_fails_the_build(tmp_path):
-    r = _mini_book(tmp_path, """
+    r = build_mini_book(tmp_path, local_extensions={"page_guard": str(ROOT / "book" / "_ext")}, body="""
         # Page
 
         ```{code-cell} ipython3

@@ -12,8 +12,6 @@ Debian's ``chromium``, driven through Python playwright.
 from __future__ import annotations
 
 import re
-import shutil
-import socket
 import subprocess
 import sys
 import time
@@ -22,10 +20,11 @@ from pathlib import Path
 
 import pytest
 
+from conftest import CHROMIUM, CHROMIUM_ARGS, NEEDS_CHROMIUM, free_port
+
 ROOT = Path(__file__).resolve().parents[1]
 SITE = ROOT / "_build" / "html"
 SHOTS = ROOT / "_build" / "screenshots"
-CHROMIUM = shutil.which("chromium")
 START = "book/ch1_counterweights.html"   # the page the reader is on
 TARGET = "book/ch5_fourbar.html"         # the chapter picked in the table of contents
 TIMEOUT_MS = 15_000
@@ -33,15 +32,8 @@ TIMEOUT_MS = 15_000
 pytestmark = [
     pytest.mark.slow,
     pytest.mark.browser,
-    pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (the setup script "
-                                                "installs it with apt: apt-get install chromium)"),
+    NEEDS_CHROMIUM,
 ]
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _title(rel: str) -> str:
@@ -65,7 +57,7 @@ def site() -> Path:
 
 @pytest.fixture(scope="module")
 def server(site):
-    port = _free_port()
+    port = free_port()
     proc = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
                              "--directory", str(site)],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -91,8 +83,7 @@ def server(site):
 def browser():
     sync_api = pytest.importorskip("playwright.sync_api")
     with sync_api.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, args=["--headless", "--no-sandbox", "--disable-gpu",
-                                                               "--disable-background-networking"])
+        b = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
         yield b
         b.close()
 
