@@ -18,7 +18,7 @@ from ...core.design import Design, UnreachableConfiguration
 from ...core.elements import G
 from .core import AnswerError
 
-__all__ = ["quantity", "vector", "point", "numeric", "numeric_vector", "symbolic", "as_mapping",
+__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "as_mapping",
            "DESIGN_TOLERANCE", "design_balanced"]
 
 _UNITS = {
@@ -173,6 +173,33 @@ def point(answer, what: str) -> np.ndarray:
     [0.1, 0.2]
     """
     return np.array(vector(answer, 2, "length", what))
+
+
+def spring(answer) -> tuple[float, np.ndarray, np.ndarray]:
+    """A spring answer ``{'k': N/m, 'a': (x, y), 'b': (x, y)}`` as ``(k, a, b)``, or raise :class:`AnswerError`.
+
+    Parameters
+    ----------
+    answer : mapping
+        The rate ``k`` (> 0, N/m or a string with a unit) and the two ends ``a`` and ``b``.
+
+    Returns
+    -------
+    (float, numpy.ndarray, numpy.ndarray)
+        ``k`` in N/m, ``a`` and ``b`` in metres.
+
+    Examples
+    --------
+    >>> k, a, b = spring({"k": "0.3 kN/m", "a": (0.3, 0), "b": (0, "20 cm")})
+    >>> k, a.tolist(), b.tolist()
+    (300.0, [0.3, 0.0], [0.0, 0.2])
+    """
+    a = as_mapping(answer, ("k", "a", "b"), "your spring")
+    k = quantity(a["k"], "stiffness", "k")
+    pa, pb = point(a["a"], "a"), point(a["b"], "b")
+    if k <= 0:
+        raise AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
+    return k, pa, pb
 
 
 def _compare(value: float, expected: float, rtol: float, unit: str) -> tuple[bool, str, str]:

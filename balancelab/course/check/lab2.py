@@ -8,7 +8,7 @@ from ...core.elements import Load, Spring
 from ...mechanisms.lever import lever_design
 from ...methods.lecture import single_link_spring
 from ...methods.singh import lacoste_lever
-from .answers import as_mapping, design_balanced, numeric, point, quantity, symbolic
+from .answers import design_balanced, numeric, spring, symbolic
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "lab2_lever"]
@@ -91,12 +91,8 @@ def _t23(answer):
                "design", "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; "
                "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 %", points=2)
 def _t24(answer):
-    a = as_mapping(answer, ("k", "a", "b"), "your spring")
+    k, pa, pb = spring(answer)
     p = LAB2_LEVER
-    k = quantity(a["k"], "stiffness", "k")
-    pa, pb = point(a["a"], "a"), point(a["b"], "b")
-    if k <= 0:
-        raise AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
     cons = [(k <= p["k_max"] * (1 + 1e-12), f"k above {p['k_max']:g} N/m"),
             (np.hypot(*pb) <= p["anchor_max"] + 1e-12,
              f"anchor b farther than {p['anchor_max']} m from the pivot"),

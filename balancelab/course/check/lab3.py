@@ -9,8 +9,8 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import G
 from ...methods.realize import negative_free_length_partner, pulley_balance_error, pulley_lever
-from .answers import as_mapping, numeric, point, quantity
-from .core import AnswerError, register_task
+from .answers import numeric, spring
+from .core import register_task
 from .lab2 import lab2_lever
 
 __all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "lab3_torque_error"]
@@ -88,12 +88,8 @@ def _t32(answer):
                "length 0.1 m; largest torque error over -60..60 deg at most 3 % of m g r; |a|, |b| <= 0.4 m",
                points=2)
 def _t33(answer):
-    a = as_mapping(answer, ("k", "a", "b"), "your spring")
+    k, pa, pb = spring(answer)
     p = LAB3_LEVER
-    k = quantity(a["k"], "stiffness", "k")
-    pa, pb = point(a["a"], "a"), point(a["b"], "b")
-    if k <= 0:
-        raise AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
     d = lab2_lever(k, tuple(pa), tuple(pb), W=p["mass"] * G, l=p["length"], free_length=p["free_length"])
     err = lab3_torque_error(d)
     fits = np.hypot(*pa) <= p["reach_max"] + 1e-12 and np.hypot(*pb) <= p["reach_max"] + 1e-12
