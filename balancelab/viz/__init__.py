@@ -2,7 +2,8 @@
 
 What lives here: ``frame`` (the shared style, input checks, configuration grids and
 off-screen rendering), ``springs`` (how a coil, a gas spring or a string over a pulley
-is drawn), ``drawing`` (:func:`draw` and :class:`Drawing`), ``energy``
+is drawn), ``drawing`` (:func:`draw` and :class:`Drawing`), ``diagram`` (labelled
+diagrams: named points, dimension lines, angle arcs), ``energy``
 (:func:`energy_plot` and :class:`EnergyView`), ``spaces`` (:func:`lever_valley`,
 :func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations)
 and ``explorer`` (live ipywidgets explorers, imported on first use). No physics is
@@ -17,13 +18,14 @@ the quantities a method defines), matplotlib; never ``course``.
 import importlib
 
 from .animation import animate, animate_parameter, configuration_path
+from .diagram import diagram, point_positions
 from .drawing import Drawing, draw
 from .energy import EnergyView, energy_plot, report_summary
 from .frame import default_q
 from .spaces import cognates_plot, family_plot, lever_valley
 
 __all__ = ["animate", "animate_parameter", "configuration_path", "Drawing", "EnergyView", "cognates_plot",
-           "default_q", "draw", "energy_plot", "family_plot", "lever_valley", "report_summary", "explore",
+           "default_q", "diagram", "draw", "energy_plot", "family_plot", "lever_valley", "point_positions", "report_summary", "explore",
            "Explorer"]
 
 _LAZY = {"explore": "explorer", "Explorer": "explorer"}
