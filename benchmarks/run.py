@@ -4,6 +4,7 @@ Usage (from the repository root; ``bash scripts/course.sh bench`` does the set-u
 
     .venv/bin/python benchmarks/run.py            # every bench_*.py
     .venv/bin/python benchmarks/run.py core book  # only bench_core.py and bench_book.py
+    .venv/bin/python benchmarks/run.py practice   # tolerance Monte Carlo (1e4 built 2R arms < 1 s)
 
 Each ``benchmarks/bench_<topic>.py`` exposes ``run()`` returning rows
 ``(name, measured value, unit, target text)``. Targets live here, not in timed tests.

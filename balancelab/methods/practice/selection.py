@@ -1,0 +1,283 @@
+"""Choosing real springs for the ZFL springs of a balanced design.
+
+The candidates form a parametric family generated from the formulas of
+:mod:`.springs`: every common wire diameter, spring index ``C`` from 4 to 14 in steps of
+0.5 and whole numbers of active coils (:func:`spring_family`). For each ZFL spring of
+the design, :func:`select_spring` keeps the candidates that survive its stroke (the
+range of distances between its ends over the design's range) and picks the one whose
+force is closest to the ideal ``k L`` over that stroke:
+
+* ``mode="pulley"``: the spring pulls a string over a pulley at the anchor (lecture 35;
+  :class:`balancelab.Pulley`). The string is set so that the spring's force is
+  ``k_real x`` with ``x`` the passed-over length, which needs the spring stretched past
+  its body length: ``x >= F_i / k_real`` everywhere (the smallest initial tension of the
+  preferred range is used); the force error is the rate error alone;
+* ``mode="direct"``: the spring hangs between the two points. Its initial tension is
+  chosen in the preferred range as close to ``k L_b`` (exact ZFL) as possible; the force
+  error ``(k_real - k) L - k_real l`` includes the equivalent free length ``l``, and the
+  spring must never close (``L >= L_b``).
+
+Both modes keep the largest force within the allowable stress (static or for a number
+of cycles). :func:`select_springs` does this for every ZFL spring, optionally moves the
+anchors to make the real rates balance exactly (``retune=True``, with
+:func:`balancelab.methods.practice.payload.rebalance`) and returns the residual torque
+curve of the built design. Layer: methods.
+"""
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from ..registry import register
+from ...core.design import Design
+from ...core.elements import Pulley, Spring
+from ...core.validation import finite_real
+from ..lecture.lever import single_link_spring
+from .forces import configurations, generalized_force
+from .payload import rebalance
+from .springs import (MUSIC_WIRE, WIRE_DIAMETERS, ExtensionSpring, Material, allowable_stress,
+                      initial_stress_range, wahl_factor)
+
+__all__ = ["spring_family", "SpringChoice", "select_spring", "Selection", "spring_strokes", "select_springs",
+           "real_spring_lever"]
+
+
+def spring_family(material: Material = MUSIC_WIRE, wire_diameters=WIRE_DIAMETERS,
+                  indices=np.arange(4.0, 14.01, 0.5), active_coils=np.arange(5, 401)) -> dict:
+    """Every combination of wire diameter, index and active coils, with its rate and limits.
+
+    Returns
+    -------
+    dict of numpy.ndarray
+        ``d``, ``D`` (m), ``Na``, ``k`` (N/m), ``Fi_low``, ``Fi_high`` (N, preferred initial
+        tension), ``body_length`` (m), ``F_allow`` (N, static allowable pull).
+
+    Examples
+    --------
+    >>> f = spring_family(wire_diameters=[1e-3], indices=[8.0], active_coils=[40])
+    >>> round(float(f["k"][0]), 2)
+    498.66
+    """
+    d, C, Na = (a.ravel() for a in np.meshgrid(np.asarray(wire_diameters, float), np.asarray(indices, float),
+                                                np.asarray(active_coils, float), indexing="ij"))
+    D = C * d
+    lo, hi = initial_stress_range(C)
+    area = np.pi * d ** 3 / (8 * D)
+    return {"d": d, "D": D, "Na": Na, "k": material.shear_modulus * d / (8 * C ** 3 * Na),
+            "Fi_low": lo * area, "Fi_high": hi * area, "body_length": d * (Na + 1),
+            "F_unit": area / wahl_factor(C), "material": material}
+
+
+class SpringChoice(NamedTuple):
+    """A chosen real spring: the spring, its relative force error over the stroke, the mode."""
+
+    spring: ExtensionSpring
+    error: float
+    mode: str
+
+
+def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | None = None,
+                  family: dict | None = None, max_body_length: float = np.inf,
+                  rate_tolerance: float = 0.01) -> SpringChoice:
+    """The real extension spring closest to a ZFL spring of rate ``k`` over a stroke.
+
+    Parameters
+    ----------
+    k : float
+        Rate of the ideal ZFL spring (N/m), > 0.
+    stroke : (float, float)
+        Shortest and longest length of the ideal spring over the range (m).
+    mode : {"pulley", "direct"}
+        See the module docstring.
+    cycles : float, optional
+        Load cycles in service (fatigue-aware allowable); static when omitted.
+    family : dict, optional
+        Candidates from :func:`spring_family` (music wire by default).
+    max_body_length : float
+        Longest acceptable closed body (m).
+    rate_tolerance : float
+        Among the candidates whose error is within this (or within the smallest error
+        found, if larger), the one with the least wire (``d^2 D N_a``) is chosen.
+
+    Returns
+    -------
+    SpringChoice
+        ``error`` = largest ``|F_real - k L| / (k L_max)`` over the stroke.
+
+    Raises
+    ------
+    ValueError
+        When no candidate survives the stroke.
+
+    Examples
+    --------
+    >>> c = select_spring(163.5, (0.1, 0.5))
+    >>> c.error < 0.01, c.spring.k * 0.5 <= c.spring.max_force()
+    (True, True)
+    """
+    k = finite_real("k (N/m)", k, positive=True)
+    rate_tolerance = finite_real("rate_tolerance", rate_tolerance, nonnegative=True)
+    lmin, lmax = (finite_real("stroke (m)", v, nonnegative=True) for v in stroke)
+    if not lmin <= lmax or lmax == 0:
+        raise ValueError(f"stroke must be (shortest, longest) with 0 <= shortest <= longest, longest > 0, got {stroke!r}")
+    if mode not in ("pulley", "direct"):
+        raise ValueError(f"mode must be 'pulley' or 'direct', got {mode!r}")
+    f = spring_family() if family is None else family
+    kc, Lb = f["k"], f["body_length"]
+    F_allow = allowable_stress(f["d"], f["material"], cycles) * f["F_unit"]
+    if mode == "pulley":
+        Fi = f["Fi_low"]
+        ok = (lmin >= Fi / kc) & (kc * lmax <= F_allow)
+        err = np.abs(kc - k) / k
+    else:
+        Fi = np.clip(kc * Lb, f["Fi_low"], f["Fi_high"])
+        ell = Lb - Fi / kc
+        ok = (lmin >= Lb) & (kc * (lmax - ell) <= F_allow)
+        err = np.maximum(np.abs((kc - k) * lmin - kc * ell), np.abs((kc - k) * lmax - kc * ell)) / (k * lmax)
+    ok &= Lb <= max_body_length
+    if not ok.any():
+        raise ValueError(f"no {mode} spring of the family survives a stroke of {lmin:.4g}-{lmax:.4g} m at "
+                         f"{k:.4g} N/m; try the other mode, a longer allowed body or another material")
+    err_ok = np.where(ok, err, np.inf)
+    good = err_ok <= max(rate_tolerance, float(err_ok.min()))
+    mass = np.where(good, f["d"] ** 2 * f["D"] * f["Na"], np.inf)  # the least wire among the good ones
+    i = int(np.argmin(mass))
+    spring = ExtensionSpring(float(f["d"][i]), float(f["D"][i]), float(f["Na"][i]), float(Fi[i]), f["material"])
+    return SpringChoice(spring, float(err[i]), mode)
+
+
+class Selection(NamedTuple):
+    """Result of :func:`select_springs`: the choices, the built design and its residual torque curve.
+
+    ``residual`` (m, dof): ``dV/dq`` of the built design (N m per rad) at ``q``; ``worst``
+    its largest magnitude; ``within_budget``: ``worst <= budget``.
+    """
+
+    choices: dict
+    design: Design
+    q: np.ndarray
+    residual: np.ndarray
+    worst: float
+    within_budget: bool
+
+
+def spring_strokes(design: Design, n: int = 61) -> list[tuple[float, float]]:
+    """Shortest and longest length (m) of every spring over the design's range.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> np.round(spring_strokes(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)), 3).tolist()
+    [[0.1, 0.5]]
+    """
+    q = configurations(design, None, n)
+    w = design.world_points(q, [at for s in design.springs for at in (s.a, s.b)])
+    L = np.linalg.norm(w[:, 1::2] - w[:, 0::2], axis=-1)
+    return [(float(L[:, i].min()), float(L[:, i].max())) for i in range(len(design.springs))]
+
+
+def _built(s: Spring, choice: SpringChoice) -> Spring:
+    real = choice.spring
+    if choice.mode == "pulley":
+        realization = s.realization if s.pulley is not None else (Pulley() if s.a.body == 0 else s.realization)
+        return Spring(real.k, 0.0, s.a, s.b, name=s.name, realization=realization)
+    return Spring(real.k, real.equivalent_free_length, s.a, s.b, name=s.name, realization="coil")
+
+
+def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycles: float | None = None,
+                   retune: bool = False, family: dict | None = None, n: int = 61) -> Selection:
+    """Real springs for every ZFL spring of ``design`` and the residual torque of the result.
+
+    Parameters
+    ----------
+    design : Design
+        A balanced design with ZFL springs.
+    budget : float
+        Largest acceptable residual generalized force (N m per rad), > 0.
+    mode : {"pulley", "direct"}
+    cycles : float, optional
+        Load cycles in service (fatigue-aware allowable).
+    retune : bool
+        Move the anchors so that the real rates balance exactly (pulley mode only; the
+        strokes are then checked again).
+    family : dict, optional
+        Candidates (:func:`spring_family`).
+    n : int
+        Configurations per coordinate.
+
+    Returns
+    -------
+    Selection
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> sel = select_springs(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2), budget=0.15)
+    >>> sel.within_budget
+    True
+    """
+    budget = finite_real("budget (N m)", budget, positive=True)
+    if not any(s.is_zfl for s in design.springs):
+        raise ValueError(f"{design.name} has no ZFL spring to realize")
+    if retune and mode != "pulley":
+        raise ValueError("retune moves anchors of ZFL springs: it needs mode='pulley'")
+    strokes = spring_strokes(design, n)
+    choices, built = {}, list(design.springs)
+    for i, s in enumerate(design.springs):
+        if s.is_zfl:
+            choices[s.name or str(i)] = select_spring(s.k, strokes[i], mode=mode, cycles=cycles, family=family)
+            built[i] = _built(s, choices[s.name or str(i)])
+    real = design.replace(springs=built, name=f"{design.name}, real springs ({mode})")
+    if retune:
+        real = rebalance(real, "anchor", [i for i, s in enumerate(design.springs) if s.is_zfl], n=n)
+        after = spring_strokes(real, n)
+        for i, s in enumerate(design.springs):
+            c = choices.get(s.name or str(i))
+            lo, hi = after[i]
+            if c is not None and (lo < c.spring.initial_tension / c.spring.k or c.spring.k * hi > c.spring.max_force(cycles)):
+                raise ValueError(f"after retuning, spring {s.name or i} leaves its safe stroke ({lo:.4g}-{hi:.4g} m)")
+    q, Q = generalized_force(real, None, n)
+    worst = float(np.abs(Q).max())
+    return Selection(choices, real, q, Q, worst, worst <= budget)
+
+
+def real_spring_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: float = 0.2,
+                      cycles: float | None = None) -> Design:
+    """The lecture's link with a real music-wire spring over a pulley, anchor moved to balance exactly.
+
+    The spring closest to the ideal ``k = m g r / (b c)`` is chosen (:func:`select_spring`,
+    pulley mode); the anchor height then becomes ``b' = m g r / (k_real c)``.
+
+    Parameters
+    ----------
+    mass, length, b, c : float
+        As in :func:`balancelab.lecture.single_link_spring`.
+    cycles : float, optional
+        Load cycles in service.
+
+    Returns
+    -------
+    Design
+        ``parameters`` hold the spring's ``d``, ``D``, ``Na``, ``F_i``, ``k`` and ``b``.
+
+    Examples
+    --------
+    >>> d = real_spring_lever()
+    >>> d.balance_report().balanced, round(d.parameters["d"] * 1000, 1)
+    (True, 1.8)
+    """
+    ideal = single_link_spring(mass, length, b, c)
+    sel = select_springs(ideal, budget=1e9, cycles=cycles, retune=True)
+    sp = next(iter(sel.choices.values())).spring
+    d = sel.design
+    return d.replace(name="lamp link with a real spring over a pulley",
+                     parameters={"d": sp.wire_diameter, "D": sp.coil_diameter, "Na": sp.active_coils,
+                                 "F_i": sp.initial_tension, "k": sp.k, "b": d.springs[0].a.point[1], "c": c,
+                                 "r": float(length)},
+                     reference="Lecture 35 (k = m g r / (b c), string over a pulley); spring formulas: "
+                               "Shigley ch. 10")
+
+
+register("real_spring_lever", "Lecture's link with a real music-wire spring over a pulley, anchor "
+         "moved to suit its rate (chapter 8)", real_spring_lever, chapter=8)

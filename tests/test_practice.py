@@ -1,0 +1,311 @@
+"""From ideal to real: real springs, selection, tolerances, friction, payloads and forces."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import balancelab as bl
+from balancelab import G
+from balancelab.methods.practice import forces as fo
+from balancelab.methods.practice import friction as fr
+from balancelab.methods.practice import payload as pl
+from balancelab.methods.practice import selection as se
+from balancelab.methods.practice import springs as sp
+from balancelab.methods.practice import tolerance as to
+from conftest import assert_exactly_balanced
+
+INCH, LBF, PSI = 0.0254, 4.4482216152605, 6894.757293168
+
+
+def lever(mass=2.0, length=0.5, b=0.3, c=0.2):
+    return bl.lecture.single_link_spring(mass, length, b, c)
+
+
+# ------------------------------------------------------------------ real springs
+def test_shigley_example_10_7_extension_spring():
+    """Budynas & Nisbett, Shigley's Mechanical Engineering Design (9th ed.), Example 10-7.
+
+    Hard-drawn steel extension spring: d = 0.035 in, OD = 0.248 in, N_a = 12.57 (12.17 body
+    turns + G/E), G = 11.6 Mpsi, F_i = 1.19 lbf. The book finds k = 17.91 lbf/in, an
+    uncorrected initial stress of 15.1 kpsi and a preferred range of 14.2-21.2 kpsi.
+    """
+    d, D = 0.035 * INCH, (0.248 - 0.035) * INCH
+    k = sp.spring_rate(d, D, 12.57, 11.6e6 * PSI)
+    assert k / (LBF / INCH) == pytest.approx(17.91, abs=0.005)
+    C = float(sp.spring_index(d, D))
+    assert C == pytest.approx(6.086, abs=5e-4)
+    tau_i = sp.shear_stress(1.19 * LBF, d, D, corrected=False) / PSI
+    assert tau_i / 1000 == pytest.approx(15.1, abs=0.05)
+    lo, hi = sp.initial_stress_range(C)
+    assert (lo / PSI / 1000, hi / PSI / 1000) == pytest.approx((14.2, 21.2), abs=0.05)
+
+
+def test_wahl_factor_formula_and_its_closeness_to_bergstrasser():
+    C = np.linspace(4, 12, 33)
+    kw = sp.wahl_factor(C)
+    assert np.allclose(kw, (4 * C - 1) / (4 * C - 4) + 0.615 / C, rtol=0, atol=0)
+    kb = (4 * C + 2) / (4 * C - 3)          # Bergstraesser's factor (Shigley eq. 10-5), a close cousin
+    assert np.all(np.abs(kw / kb - 1) < 0.015) and np.all(kw > kb)
+    assert np.all(np.diff(kw) < 0)          # the correction fades for gentler coils
+
+
+def test_extension_spring_zfl_condition_and_error():
+    s = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
+    assert s.k == pytest.approx(81.7e9 * 1e-3 / (8 * 8 ** 3 * 40), rel=1e-14)
+    assert s.body_length == pytest.approx(41e-3, rel=1e-14)
+    ell = s.body_length - 2.0 / s.k
+    L = np.linspace(s.body_length, 0.3, 7)
+    assert np.allclose(s.force(L), 2.0 + s.k * (L - s.body_length), rtol=1e-13)
+    assert np.allclose(sp.zfl_force_error(s, L), -s.k * ell, rtol=1e-12)
+    assert np.isnan(s.force(0.5 * s.body_length)) and not s.is_zfl
+    zfl = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=s.k * s.body_length)
+    assert zfl.is_zfl and np.allclose(sp.zfl_force_error(zfl, L), 0.0, atol=1e-12)
+
+
+def test_allowables_and_max_force():
+    d = 1.2e-3
+    sut = sp.tensile_strength(d)
+    assert sut == pytest.approx(2211e6 / 1.2 ** 0.145, rel=1e-14)
+    assert sp.allowable_stress(d) == pytest.approx(0.45 * sut)
+    assert sp.allowable_stress(d, sp.STAINLESS_302) == pytest.approx(0.35 * sp.tensile_strength(d, sp.STAINLESS_302))
+    cyc = [sp.allowable_stress(d, cycles=n) / sut for n in (1e3, 1e5, 1e6, 1e7, 1e9)]
+    assert cyc == pytest.approx([0.36, 0.36, 0.33, 0.30, 0.30])
+    s = sp.ExtensionSpring(d, 10e-3, 30, initial_tension=1.0)
+    for cycles in (None, 1e6):
+        assert s.stress(s.max_force(cycles)) == pytest.approx(sp.allowable_stress(d, cycles=cycles), rel=1e-12)
+    assert s.max_deflection() == pytest.approx((s.max_force() - 1.0) / s.k)
+    lo, hi = s.initial_tension_range()
+    tlo, thi = sp.initial_stress_range(s.index)
+    assert lo == pytest.approx(tlo * math.pi * d ** 3 / (8 * 10e-3)) and hi > lo
+
+
+# -------------------------------------------------------------------- selection
+def test_pulley_selection_residual_is_the_rate_error_in_closed_form():
+    d = lever()
+    sel = se.select_springs(d, budget=0.5, n=73)
+    choice = sel.choices["k"]
+    real = choice.spring
+    k = d.springs[0].k
+    # stroke 0.1 .. 0.5 m: taut string and allowable stress
+    assert 0.1 >= real.initial_tension / real.k and real.k * 0.5 <= real.max_force()
+    assert choice.error == pytest.approx(abs(real.k - k) / k)
+    th = sel.q[:, 0]
+    assert np.allclose(sel.residual[:, 0], (k - real.k) * 0.3 * 0.2 * np.cos(th), atol=1e-9)
+    assert sel.worst == pytest.approx(np.abs(sel.residual).max()) and sel.within_budget
+
+
+def test_direct_selection_matches_the_designs_own_torque():
+    d = lever()
+    sel = se.select_springs(d, budget=0.01, mode="direct", n=41)
+    real = sel.choices["k"].spring
+    s = sel.design.springs[0]
+    assert s.k == real.k and s.free_length == pytest.approx(real.equivalent_free_length)
+    assert np.allclose(sel.residual, sel.design.generalized_force(sel.q), atol=1e-6)
+    assert not sel.within_budget   # an ordinary extension spring cannot hold 0.01 N m here
+
+
+def test_retuned_real_spring_lever_is_balanced_and_realizable():
+    d = se.real_spring_lever()
+    assert_exactly_balanced(d)
+    p = d.parameters
+    assert p["k"] * p["b"] * p["c"] == pytest.approx(2.0 * G * 0.5, rel=1e-9)
+    real = sp.ExtensionSpring(p["d"], p["D"], p["Na"], p["F_i"])
+    assert real.k == pytest.approx(d.springs[0].k, rel=1e-14)
+
+
+def test_selection_refuses_what_no_spring_can_do():
+    with pytest.raises(ValueError, match="no pulley spring"):
+        se.select_spring(5000.0, (0.0, 2.0))
+    with pytest.raises(ValueError, match="mode"):
+        se.select_spring(100.0, (0.1, 0.2), mode="magic")
+    with pytest.raises(ValueError, match="stroke"):
+        se.select_spring(100.0, (0.3, 0.2))
+    with pytest.raises(ValueError, match="retune"):
+        se.select_springs(lever(), 1.0, mode="direct", retune=True)
+
+
+# -------------------------------------------------------------------- tolerances
+def test_monte_carlo_matches_the_closed_form_of_a_rate_error():
+    d = lever()
+    th = np.linspace(-np.pi / 2, np.pi / 2, 41)[:, None]
+    r = to.monte_carlo(d, to.Tolerances(k=0.05), n=3000, q=th, seed=1)
+    eps = r.samples["k"][:, 0] / d.springs[0].k - 1
+    assert np.allclose(r.worst, np.abs(eps) * 2.0 * G * 0.5, rtol=1e-7, atol=1e-9)
+    # and the distribution is that of |N(0, 0.05)| m g r: median 0.6745 sigma m g r
+    assert r.quantile(0.5) / (0.05 * 2.0 * G * 0.5) == pytest.approx(0.6745, abs=0.03)
+
+
+def test_monte_carlo_mass_error_and_uniform_tolerances():
+    d = lever()
+    th = np.linspace(-np.pi / 2, np.pi / 2, 41)[:, None]
+    r = to.monte_carlo(d, {"mass": 0.02}, n=500, q=th, distribution="uniform")
+    s = r.samples["load_scale"][:, 0]
+    assert np.all(np.abs(s - 1) <= 0.02)
+    assert np.allclose(r.worst, np.abs(s - 1) * 2.0 * G * 0.5, rtol=1e-7, atol=1e-9)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(0, 10_000))
+def test_vectorized_generalized_force_equals_the_energy_derivative(seed):
+    arm = bl.singh.serial_2r_min_preload()
+    rng = np.random.default_rng(seed)
+    springs = [bl.Spring(s.k * rng.uniform(0.8, 1.2), rng.uniform(-0.05, 0.05), (s.a.body, s.a.point + rng.normal(0, 0.02, 2)),
+                         (s.b.body, s.b.point + rng.normal(0, 0.02, 2))) for s in arm.springs]
+    loads = [bl.Load(ld.body, ld.point, tuple(np.asarray(ld.force) * rng.uniform(0.9, 1.1))) for ld in arm.loads]
+    built = arm.replace(springs=springs, loads=loads)
+    q = rng.uniform(-np.pi, np.pi, (20, 2))
+    Q = fo.batch_generalized_force(arm, q, k=[[s.k for s in springs]], free_length=[[s.free_length for s in springs]],
+                                   a_points=[[s.a.point for s in springs]], b_points=[[s.b.point for s in springs]],
+                                   load_scale=[[ld.force[1] / l0.force[1] for ld, l0 in zip(loads, arm.loads)]])
+    assert np.allclose(Q[0], built.generalized_force(q), atol=2e-6)
+
+
+def test_sensitivities_rank_the_tolerances():
+    s = to.sensitivities(lever(), to.Tolerances(k=0.05, mass=0.001, attachment=0.0), n=400, grid=21)
+    assert list(s)[0] == "all" and list(s)[1] == "k" and "attachment" not in s
+    assert s["k"] > 10 * s["mass"]
+
+
+def test_monte_carlo_refuses_bad_input():
+    with pytest.raises(ValueError, match="unknown tolerances"):
+        to.monte_carlo(lever(), {"stiffness": 0.1})
+    with pytest.raises(ValueError, match=">= 0"):
+        to.monte_carlo(lever(), to.Tolerances(k=-0.1))
+    with pytest.raises(ValueError, match="distribution"):
+        to.monte_carlo(lever(), to.Tolerances(k=0.1), distribution="cauchy")
+
+
+# ---------------------------------------------------------------------- friction
+def test_friction_band_of_the_balanced_link_is_tau_over_g_r():
+    tau, r = 0.15, 0.5
+    band = fr.friction_band(lever(), tau, 1, (r, 0.0))
+    assert (band.low, band.high) == pytest.approx((-tau / (G * r), tau / (G * r)), rel=1e-9)
+    assert not band.empty
+    # hand calculation: an extra 10 g at the tip needs 0.01 g r cos(theta) of holding torque
+    heavier = pl.add_payload(lever(), 0.01, 1, (r, 0.0))
+    q, ok = fr.stays_put(heavier, 0.01 * G * r * 1.001, n=41)
+    assert ok.all()
+    q, ok = fr.stays_put(heavier, 0.01 * G * r * 0.9, n=41)
+    assert np.array_equal(ok, 0.01 * G * r * np.abs(np.cos(q[:, 0])) <= 0.01 * G * r * 0.9 + 1e-12)
+
+
+def test_hand_force_on_an_unbalanced_link():
+    heavier = pl.add_payload(lever(), 0.1, 1, (0.5, 0.0))
+    q, up, down = fr.hand_force(heavier, 0.2, 1, (0.4, 0.0), n=37)
+    imbalance = 0.1 * G * 0.5 * np.cos(q[:, 0])
+    assert np.allclose(up, np.maximum(imbalance + 0.2, 0) / 0.4, atol=1e-7)
+    assert np.allclose(down, np.maximum(-imbalance + 0.2, 0) / 0.4, atol=1e-7)
+
+
+def test_friction_refuses_bad_input():
+    arm = bl.singh.serial_2r_min_preload()
+    with pytest.raises(ValueError, match="one per joint"):
+        fr.joint_friction(arm, [0.1, 0.1, 0.1])
+    with pytest.raises(ValueError, match=">= 0"):
+        fr.joint_friction(arm, -0.1)
+    with pytest.raises(ValueError, match="direction"):
+        fr.hand_force(arm, 0.1, 2, (1.0, 0.0))
+
+
+# ------------------------------------------------------------------------ forces
+def test_joint_loads_against_an_independent_statics_of_the_2r():
+    arm = bl.singh.serial_2r_min_preload()
+    rng = np.random.default_rng(3)
+    built = arm.replace(springs=[bl.Spring(s.k * rng.uniform(0.9, 1.1), 0.0, s.a, s.b) for s in arm.springs])
+    q = rng.uniform(-np.pi, np.pi, (30, 2))
+    jl = fo.joint_loads(built, q)
+    assert jl.children == (frozenset({1, 2}), frozenset({2}))
+    # statics by hand: every force on link 2 (its weight, the pull of springs 2 and 3)
+    total2 = np.zeros((30, 2))
+    total12 = np.zeros((30, 2))
+    for ld in built.loads:
+        total12 += ld.force
+        if ld.body == 2:
+            total2 += ld.force
+    for s in built.springs:
+        a, b = built.world_points(q, [s.a, s.b]).transpose(1, 0, 2)
+        pull = s.k * (a - b)            # a ZFL spring pulls its end b towards a with k |a - b|
+        total12 += pull
+        if s.b.body == 2:
+            total2 += pull
+    assert np.allclose(jl.force[:, 1], -total2, atol=1e-9)
+    assert np.allclose(jl.force[:, 0], -total12, atol=1e-9)
+    # virtual work: joint 1 turns both links (d theta_1 = d theta_2), joint 2 only link 2
+    Q = built.generalized_force(q)
+    assert np.allclose(jl.torque[:, 0], Q[:, 0] + Q[:, 1], atol=1e-6)
+    assert np.allclose(jl.torque[:, 1], Q[:, 1], atol=1e-6)
+
+
+def test_joint_loads_hand_case_and_balanced_torques():
+    d = lever()
+    th = np.linspace(-np.pi, np.pi, 13)[:, None]
+    jl = fo.joint_loads(d, th)
+    C = 0.2 * np.stack([np.cos(th[:, 0]), np.sin(th[:, 0])], -1)
+    spring_pull = d.springs[0].k * (np.array([0.0, 0.3]) - C)
+    assert np.allclose(jl.force[:, 0], -(spring_pull + [0.0, -2.0 * G]), atol=1e-9)
+    assert np.abs(jl.torque).max() < 1e-9
+    assert np.allclose(fo.spring_forces(d, th)[:, 0], d.springs[0].k * np.linalg.norm(np.array([0.0, 0.3]) - C, axis=-1))
+
+
+def test_free_choices_trade_spring_force_not_energy():
+    W, l = 10.0, 0.5
+    a = [0.25, 0.5, 1.0]
+    c = fo.compare_free_choices(lambda ax: bl.singh.min_preload_lever(W, l, ax), a, n=40)
+    assert np.allclose(c["energy"], W * l)                                 # PE_min = W l for every choice
+    assert np.allclose(c["max_spring_force"], [2 * W * l / x for x in a])  # k (2 a_x), k = W l / a_x^2
+    assert np.all(np.diff(c["max_joint_load"]) < 0) and c["max_holding_torque"].max() < 1e-9
+
+
+def test_joint_loads_refuse_a_closed_loop():
+    with pytest.raises(ValueError, match="tree"):
+        fo.joint_loads(bl.lecture.serial_2r_parallelogram(), [[0.1, 0.2]])
+
+
+# ----------------------------------------------------------------------- payload
+def test_rebalance_lever_by_anchor_and_by_stiffness():
+    d = lever()
+    heavy = pl.add_payload(d, 0.5, 1, (0.5, 0.0))
+    by_anchor = pl.rebalance(heavy)
+    assert by_anchor.springs[0].a.point == pytest.approx((0.0, 2.5 * G * 0.5 / (d.springs[0].k * 0.2)), abs=1e-12)
+    by_k = pl.rebalance(heavy, "stiffness")
+    assert by_k.springs[0].k == pytest.approx(2.5 * G * 0.5 / (0.3 * 0.2), rel=1e-9)
+    for new in (by_anchor, by_k):
+        assert new.balance_report().balanced
+
+
+def test_adjustment_work_closed_form():
+    d = lever()
+    new = pl.rebalance(pl.add_payload(d, 0.5, 1, (0.5, 0.0)))
+    b, b2, c, k = 0.3, new.springs[0].a.point[1], 0.2, d.springs[0].k
+    th = np.linspace(-1.5, 1.5, 11)[:, None]
+    q, W = pl.adjustment_work(d, new, th)
+    assert np.allclose(W, 0.5 * k * (b2 - b) * (b2 + b - 2 * c * np.sin(th[:, 0])), atol=1e-10)
+
+
+def test_rebalance_2r_by_anchors_and_refusals():
+    arm = bl.singh.serial_2r_min_preload()
+    heavy = pl.add_payload(arm, 0.5, 2, (2.0, 0.0))
+    assert pl.rebalance(heavy).balance_report().balanced
+    with pytest.raises(ValueError, match="cannot balance"):
+        pl.rebalance(heavy, "stiffness")
+    with pytest.raises(ValueError, match="adjust"):
+        pl.rebalance(heavy, "colour")
+    with pytest.raises(ValueError, match="ZFL"):
+        pl.rebalance(bl.lecture.single_link_ordinary_spring(2.0, 0.5, 0.3, 0.2, 0.05))
+
+
+def test_extension_spring_refuses_bad_input():
+    with pytest.raises(ValueError, match="index"):
+        sp.ExtensionSpring(1e-3, 2e-3, 10)
+    with pytest.raises(ValueError, match="initial_tension"):
+        sp.ExtensionSpring(1e-3, 8e-3, 10, initial_tension=-1.0)
+    with pytest.raises(TypeError, match="material"):
+        sp.ExtensionSpring(1e-3, 8e-3, 10, material="steel")
+    with pytest.raises(ValueError, match="wire_diameter"):
+        sp.spring_rate(-1e-3, 8e-3, 10)
+    with pytest.raises(ValueError, match="cycles"):
+        sp.allowable_stress(1e-3, cycles=0.5)
