@@ -18,7 +18,8 @@ The package is layered; each layer imports only the ones above it in this list:
 ``methods``
     the balancing methods, one namespace per source: :mod:`lecture <balancelab.methods.lecture>`,
     :mod:`singh <balancelab.methods.singh>`, :mod:`lustig <balancelab.methods.lustig>`,
-    :mod:`deepak <balancelab.methods.deepak>`, :mod:`realize <balancelab.methods.realize>`;
+    :mod:`deepak <balancelab.methods.deepak>`, :mod:`realize <balancelab.methods.realize>`,
+    :mod:`practice <balancelab.methods.practice>` (real springs, tolerances, friction, forces);
     each declares its worked examples in the registry.
 ``viz``
     drawings, energy plots, animations and explorers of any design.
@@ -26,7 +27,8 @@ The package is layered; each layer imports only the ones above it in this list:
     the catalog of worked examples, the gallery, the labs' answer checks, the grader.
 
 The top level re-exports the design types, the mechanisms' builders, the method
-namespaces (``bl.lecture``, ``bl.singh``, ``bl.lustig``, ``bl.deepak``, ``bl.realize``),
+namespaces (``bl.lecture``, ``bl.singh``, ``bl.lustig``, ``bl.deepak``, ``bl.realize``,
+``bl.practice``),
 ``catalog`` and the viz functions. matplotlib, scipy, sympy and ipywidgets are imported
 only when something that needs them is first used.
 """
@@ -44,7 +46,8 @@ __version__ = "0.2.0"
 #: top-level names imported on first use: name -> module that defines it
 _LAZY = {
     "lustig": "balancelab.methods.lustig", "deepak": "balancelab.methods.deepak",
-    "realize": "balancelab.methods.realize", "viz": "balancelab.viz", "course": "balancelab.course",
+    "realize": "balancelab.methods.realize", "practice": "balancelab.methods.practice",
+    "viz": "balancelab.viz", "course": "balancelab.course",
     **{name: "balancelab.viz" for name in ("draw", "energy_plot", "lever_valley", "family_plot",
                                            "cognates_plot", "animate", "animate_parameter", "explore",
                                            "Explorer")},
