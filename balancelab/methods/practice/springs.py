@@ -68,7 +68,7 @@ _SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, tables 1
 #: Music wire (ASTM A228), valid for wire diameters 0.10-6.5 mm.
 MUSIC_WIRE = Material("music wire (ASTM A228)", 81.7e9, 2211.0, 0.145, 0.45, _SHIGLEY)
 #: Stainless steel 302 (ASTM A313), valid for wire diameters 0.3-2.5 mm.
-STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.6e9, 1867.0, 0.146, 0.35, _SHIGLEY)
+STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.0e9, 1867.0, 0.146, 0.35, _SHIGLEY)
 #: The bundled materials by short name.
 MATERIALS = {"music_wire": MUSIC_WIRE, "stainless_302": STAINLESS_302}
 
