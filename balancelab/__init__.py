@@ -51,6 +51,8 @@ _LAZY = {
     **{name: "balancelab.viz" for name in ("draw", "energy_plot", "lever_valley", "family_plot",
                                            "cognates_plot", "animate", "animate_parameter", "explore",
                                            "Explorer")},
+    "Linkage": "balancelab.mechanisms.linkage",
+    **{name: "balancelab.methods.general" for name in ("balance", "InfeasibleDesign")},
 }
 
 __all__ = [

@@ -16,8 +16,10 @@ def test_catalog_is_the_registry_in_course_order():
     # within a chapter, the lecture before the papers; within a module, top to bottom
     assert names.index("single_link_zfl") < names.index("single_link_zfl_below") < names.index("lacoste_lever")
     assert names.index("fourbar_counterweights") < names.index("singh_fourbar") < names.index("deepak_technique1")
-    chapter6 = [n for n in names if examples[n].chapter == 6]  # later chapters may follow
+    chapter6 = [n for n in names if examples[n].chapter == 6]
     assert chapter6[-2:] == ["scissors_lift", "peaucellier_board"]
+    # chapter 7 (balance your own linkage): the general balancer's examples
+    assert {e.family for e in examples.values() if e.chapter == 7} == {"general"}
 
 
 def test_every_example_names_its_family_and_counter_examples_are_marked():

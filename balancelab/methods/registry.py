@@ -24,7 +24,7 @@ from ..core.design import Design
 __all__ = ["Example", "example", "register", "examples", "FAMILIES"]
 
 #: The method families, in the order the course meets them within a chapter.
-FAMILIES = ("lecture", "singh", "realize", "lustig", "deepak", "practice")
+FAMILIES = ("lecture", "singh", "realize", "lustig", "deepak", "general", "practice")
 
 _REGISTRY: dict[str, "Example"] = {}
 _MODULES: dict[str, int] = {}  # module -> the order in which it first registered

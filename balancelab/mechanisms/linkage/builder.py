@@ -1,0 +1,212 @@
+"""`Linkage`: build a design of your own, body by body, joint by joint.
+
+Bodies are named (strings; an integer is the index of an existing body, 0 the ground
+``"ground"``) and created when first named. Joints are revolute only (a prismatic joint
+is not supported). Masses, constant forces and springs (any free length) sit at local
+points of bodies: each body's local frame is the one its joint points are written in.
+:meth:`Linkage.build` checks the topology and returns a :class:`balancelab.Design` on
+:class:`.kinematics.LinkageKinematics`. Layer: mechanisms.
+"""
+from __future__ import annotations
+
+from typing import Mapping, Sequence
+
+from ...core.design import Design
+from ...core.elements import Joint, Load, Spring, gravity_load
+from ...core.validation import finite_real, planar_point
+from .kinematics import LinkageKinematics
+
+__all__ = ["Linkage", "BodyRef"]
+
+#: a body: its name, or its index (0 is the ground)
+BodyRef = str | int
+
+
+class Linkage:
+    """A planar linkage under construction: named bodies, revolute joints, masses, loads, springs.
+
+    Parameters
+    ----------
+    name : str
+        Title of the designs it builds.
+
+    Examples
+    --------
+    The four-bar of issue 11: crank 0.4 m, coupler 1 m, rocker 0.8 m, ground pivots 1 m apart.
+
+    >>> lk = Linkage("four-bar")
+    >>> lk.revolute("ground", (0.0, 0.0), "crank", (0.0, 0.0))
+    >>> lk.revolute("crank", (0.4, 0.0), "coupler", (0.0, 0.0))
+    >>> lk.revolute("coupler", (1.0, 0.0), "rocker", (0.8, 0.0))
+    >>> lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
+    >>> lk.mass("crank", 2.0, at=(0.2, 0.0))
+    >>> lk.load("coupler", (0.0, -30.0), at=(0.5, 0.1))
+    >>> d = lk.build(guess={"crank": 1.0, "rocker": 1.5})
+    >>> d.bodies, d.q_names, d.dof
+    (('ground', 'crank', 'coupler', 'rocker'), ('theta_1',), 1)
+    """
+
+    def __init__(self, name: str = "linkage"):
+        self.name = str(name)
+        self._bodies: list[str] = ["ground"]
+        self._joints: list[Joint] = []
+        self._loads: list[Load] = []
+        self._springs: list[Spring] = []
+        self._labels: dict = {}
+
+    @property
+    def bodies(self) -> tuple[str, ...]:
+        """Names of the bodies so far, the ground first."""
+        return tuple(self._bodies)
+
+    def body(self, name: str) -> int:
+        """Declare a new body ``name`` (fixes the body order) and return its index.
+
+        Raises
+        ------
+        ValueError
+            If a body of that name exists already (duplicate names).
+
+        Examples
+        --------
+        >>> Linkage().body("arm")
+        1
+        """
+        if not isinstance(name, str) or not name.strip():
+            raise TypeError(f"a body name must be a non-empty str, got {name!r}")
+        if name in self._bodies:
+            raise ValueError(f"duplicate body name {name!r}: a body of that name exists already "
+                             f"(bodies: {self._bodies})")
+        self._bodies.append(name)
+        return len(self._bodies) - 1
+
+    def _index(self, body: BodyRef, what: str) -> int:
+        if isinstance(body, bool):
+            raise TypeError(f"{what} must be a body name (str) or index (int), got {body!r}")
+        if isinstance(body, int):
+            if not 0 <= body < len(self._bodies):
+                raise ValueError(f"{what} index must be in 0..{len(self._bodies) - 1} (existing bodies "
+                                 f"{self._bodies}), got {body}")
+            return body
+        if not isinstance(body, str) or not body.strip():
+            raise TypeError(f"{what} must be a body name (str) or index (int), got {body!r}")
+        return self._bodies.index(body) if body in self._bodies else self.body(body)
+
+    def revolute(self, body_a: BodyRef, point_a, body_b: BodyRef, point_b) -> None:
+        """Join ``point_a`` of ``body_a`` and ``point_b`` of ``body_b`` (local points, m) by a pin.
+
+        Examples
+        --------
+        >>> lk = Linkage()
+        >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+        >>> lk.bodies
+        ('ground', 'arm')
+        """
+        a, b = self._index(body_a, "body_a"), self._index(body_b, "body_b")
+        if a == b:
+            raise ValueError(f"a joint must join two different bodies; both sides are {self._bodies[a]!r}")
+        joint = Joint(a, planar_point("point_a (m)", point_a), b, planar_point("point_b (m)", point_b))
+        flipped = Joint(joint.body_j, joint.point_j, joint.body_i, joint.point_i)
+        if joint in self._joints or flipped in self._joints:
+            raise ValueError(f"duplicate joint: {self._bodies[a]!r} {joint.point_i} and {self._bodies[b]!r} "
+                             f"{joint.point_j} are joined already")
+        self._joints.append(joint)
+
+    def mass(self, body: BodyRef, mass: float, at=(0.0, 0.0), name: str = "") -> None:
+        """Hang a mass ``mass`` (kg) at the local point ``at`` (m) of ``body`` (its weight, g along -y).
+
+        Examples
+        --------
+        >>> lk = Linkage()
+        >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+        >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+        >>> lk.build().loads[0].force
+        (0.0, -19.62)
+        """
+        b = self._index(body, "body")
+        self._loads.append(gravity_load(b, planar_point("at (m)", at), mass, name=name))
+
+    def load(self, body: BodyRef, force, at=(0.0, 0.0), name: str = "") -> None:
+        """Apply a constant ``force`` ``(f_x, f_y)`` (N, global frame) at the local point ``at`` of ``body``.
+
+        Examples
+        --------
+        >>> lk = Linkage()
+        >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+        >>> lk.load("arm", (5.0, 0.0), at=(0.3, 0.0))
+        >>> lk.build().loads[0].force
+        (5.0, 0.0)
+        """
+        b = self._index(body, "body")
+        self._loads.append(Load(b, planar_point("at (m)", at), planar_point("force (N)", force), name=name))
+
+    def spring(self, body_a: BodyRef, point_a, body_b: BodyRef, point_b, k: float,
+               free_length: float = 0.0, name: str = "") -> None:
+        """A linear spring of rate ``k`` (N/m) and ``free_length`` (m; 0 is a ZFL spring) between two points.
+
+        Examples
+        --------
+        >>> lk = Linkage()
+        >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+        >>> lk.spring("arm", (0.2, 0.0), "ground", (0.0, 0.3), k=100.0)
+        >>> lk.build().springs[0].is_zfl
+        True
+        """
+        a, b = self._index(body_a, "body_a"), self._index(body_b, "body_b")
+        self._springs.append(Spring(finite_real("k (N/m)", k, positive=True), free_length,
+                                    (a, point_a), (b, point_b), name=name))
+
+    def label(self, name: str, body: BodyRef, point) -> None:
+        """Name a body point for the figures (``design.labels``).
+
+        Examples
+        --------
+        >>> lk = Linkage()
+        >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+        >>> lk.label("tip", "arm", (0.5, 0.0))
+        >>> lk.build().labels["tip"]
+        (1, (0.5, 0.0))
+        """
+        if name in self._labels:
+            raise ValueError(f"duplicate label {name!r}")
+        self._labels[str(name)] = (self._index(body, "body"), planar_point("point (m)", point))
+
+    def _check(self) -> None:
+        if len(self._bodies) < 2:
+            raise ValueError("the linkage has no moving body: join one to the ground with revolute()")
+        jointed = {b for j in self._joints for b in (j.body_i, j.body_j)}
+        lonely = [n for i, n in enumerate(self._bodies) if i and i not in jointed]
+        if lonely:
+            raise ValueError(f"bodies {lonely} have no joint: join each body to the linkage with revolute()")
+
+    def build(self, driving: Sequence[BodyRef] | None = None, guess: Mapping[BodyRef, float] | None = None,
+              name: str | None = None) -> Design:
+        """Check the linkage, assemble it and return its :class:`Design`.
+
+        Parameters
+        ----------
+        driving : sequence of body names or indices, optional
+            Bodies whose absolute angles are the coordinates ``theta_<index>`` (as many as
+            the degrees of freedom); by default the earliest bodies that determine the rest.
+        guess : mapping of body to angle (rad), optional
+            Body angles to start the assembly from: this picks the circuit (branch).
+        name : str, optional
+            Title of the design (default: the linkage's name).
+
+        Returns
+        -------
+        Design
+
+        Raises
+        ------
+        ValueError
+            For disconnected bodies, a body without a joint, an over-constrained linkage, a
+            linkage that does not assemble, or driving bodies that do not determine the rest.
+        """
+        self._check()
+        drive = None if driving is None else [self._index(b, "driving") for b in driving]
+        start = None if guess is None else {self._index(b, "guess"): finite_real(f"guess[{b!r}] (rad)", a)
+                                            for b, a in dict(guess).items()}
+        kin = LinkageKinematics(len(self._bodies), self._joints, drive, start, self._bodies)
+        return Design(self.name if name is None else name, self._bodies, self._joints, kin, self._loads,
+                      self._springs, labels=self._labels, reference="balancelab.Linkage (numeric kinematics)")

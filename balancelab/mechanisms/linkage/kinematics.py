@@ -1,0 +1,354 @@
+"""`LinkageKinematics`: numeric kinematics of any planar linkage of revolute joints.
+
+The coordinates are the absolute angles of the *driving* bodies (``theta_<body index>``,
+from the global x-axis, as ``theta_1``, ``theta_2`` of the course); the other bodies'
+angles are solved from the loop-closure equations (:mod:`.topology`). The linkage is
+first *assembled* (damped Newton from a guess, then from fixed pseudo-random starts),
+which picks its circuit; the degrees of freedom are the number of body angles minus the
+numeric rank of the closure Jacobian there (compared with Grübler's count). Then:
+
+* a tree (no loop): every body angle is a coordinate, each turns fully;
+* one degree of freedom: the circuit is followed by continuation from the assembled
+  configuration in both directions (steps of 2 degrees, halved down to 1e-9 rad at a
+  limit), which gives the range of the driving angle and a table of solutions;
+* more degrees of freedom: a grid over one turn of each coordinate is flood-filled from
+  the assembled configuration, each node solved from a solved neighbour.
+
+``poses(q)`` starts Newton from the table (a cubic Hermite interpolation with the circuit's
+tangents at the nodes, good to about 1e-8 rad, so that one Newton step reaches round-off) or from
+the nearest solved grid node (three continuation sub-steps, each predicted along the tangent),
+for all configurations at once. A
+configuration is reported reachable only when it lies in the range, Newton closes every
+loop to ``1e-10`` of the linkage's size, and the solution stayed on the circuit (moved
+less than 0.3 rad from its start). Layer: mechanisms.
+"""
+from __future__ import annotations
+
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from ...core.elements import Joint
+from ...core.kinematics import Kinematics
+from ..geometry import rotate
+from .topology import Topology, newton
+
+__all__ = ["LinkageKinematics", "STEP"]
+
+#: continuation step along a single driving angle (rad)
+STEP = np.radians(2.0)
+_JUMP = 0.3  # largest change (rad) of a dependent angle from its start that still counts as the same circuit
+_STARTS = 96  # pseudo-random starting configurations tried when assembling
+
+
+class LinkageKinematics(Kinematics):
+    """Kinematics of a planar linkage of revolute joints, solved numerically.
+
+    Parameters
+    ----------
+    nbodies : int
+        Number of bodies, the ground (body 0) included.
+    joints : sequence of Joint
+        The revolute joints.
+    driving : sequence of int, optional
+        Bodies whose absolute angles are the coordinates (as many as the degrees of
+        freedom); chosen automatically (earliest bodies first) by default.
+    guess : mapping of int to float, optional
+        Body angles (rad) to start the assembly from: this picks the circuit (branch).
+    names : sequence of str, optional
+        Body names, for error messages.
+
+    Raises
+    ------
+    ValueError
+        If the linkage does not assemble, is over-constrained (no mobility), or the
+        driving bodies do not determine the other angles.
+
+    Examples
+    --------
+    A four-bar (ground pivots 1 m apart, crank 0.4 m, coupler 1 m, rocker 0.8 m):
+
+    >>> J = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (0.4, 0.0), 2, (0.0, 0.0)),
+    ...      Joint(2, (1.0, 0.0), 3, (0.8, 0.0)), Joint(3, (0.0, 0.0), 0, (1.0, 0.0))]
+    >>> kin = LinkageKinematics(4, J, guess={1: 1.0, 2: 0.0, 3: 1.5})
+    >>> kin.names, kin.dof, kin.full_turn
+    (('theta_1',), 1, True)
+    >>> float(kin.joint_error([[0.3], [2.0]], J).max()) < 1e-12
+    True
+    """
+
+    def __init__(self, nbodies: int, joints: Sequence[Joint], driving: Sequence[int] | None = None,
+                 guess: Mapping[int, float] | None = None, names: Sequence[str] | None = None):
+        self.nbodies = int(nbodies)
+        self.joints = tuple(Joint(*j) for j in joints)
+        self.body_names = tuple(names) if names is not None else tuple(f"body {i}" for i in range(nbodies))
+        self.topology = Topology(self.nbodies, self.joints)
+        pts = [abs(v) for j in self.joints for p in (j.point_i, j.point_j) for v in p]
+        self.size = max(max(pts, default=0.0), 1e-9)
+        self.tol = 1e-13 * self.size
+        self.accept = 1e-10 * self.size
+        self.assembled = self._assemble(guess)
+        self.grubler = 3 * (self.nbodies - 1) - 2 * len(self.joints)
+        self._mobility()
+        self.driving = self._driving(driving)
+        self.dependent = [b for b in range(1, self.nbodies) if b not in self.driving]
+        self.names = tuple(f"theta_{b}" for b in self.driving)
+        self.independent_symbols = True if not self.topology.loops else None
+        self.full_turn = False
+        self._table = self._grid = None
+        if not self.topology.loops:
+            self.full_turn = True
+            self.q_range = np.array([[-np.pi, np.pi]] * self.dof)
+        elif self.dof == 1:
+            self._follow_circuit()
+        else:
+            self._fill_grid()
+
+    # ------------------------------------------------------------------ set-up
+    def _assemble(self, guess) -> np.ndarray:
+        """Angles of an assembled configuration, from ``guess`` first, then fixed pseudo-random starts."""
+        n = self.nbodies
+        starts = np.random.default_rng(0).uniform(-np.pi, np.pi, (_STARTS, n))
+        starts[0] = 0.0
+        if guess:
+            first = np.zeros(n)
+            for b, a in dict(guess).items():
+                first[int(b)] = float(a)
+            starts = np.vstack([first, starts])
+        starts[:, 0] = 0.0
+        if not self.topology.loops:
+            return starts[0]
+        th, err = newton(self.topology, starts, range(1, n), self.tol, iterations=80, damping=1e-9)
+        good = np.flatnonzero(err <= self.accept)
+        if not len(good):
+            raise ValueError(
+                f"the linkage does not assemble: from {len(starts)} starting configurations the loop-closure "
+                f"gap stays >= {err.min():.3g} m (check the joint points: a loop must be able to close)")
+        return th[good[0]]
+
+    def _rank(self, angles: np.ndarray, columns) -> int:
+        if not self.topology.loops:
+            return 0
+        jac = self.topology.residual_and_jacobian(angles)[1][:, list(columns)]
+        s = np.linalg.svd(jac, compute_uv=False)
+        return int((s > 1e-9 * max(s.max(), 1e-300)).sum()) if s.size else 0
+
+    def _mobility(self) -> None:
+        moving = range(1, self.nbodies)
+        rank = self._rank(self.assembled, moving)
+        self.rank = rank
+        mobility = self.nbodies - 1 - rank
+        if mobility <= 0:
+            raise ValueError(
+                f"the linkage is over-constrained: it cannot move (Grübler's count 3(n - 1) - 2j = "
+                f"{self.grubler} with n = {self.nbodies} bodies and j = {len(self.joints)} joints; "
+                f"the constraint Jacobian has rank {rank} for {self.nbodies - 1} body angles)")
+        self.redundant = mobility - self.grubler  # constraints that do not count (e.g. a parallelogram's)
+
+    def _driving(self, driving) -> tuple[int, ...]:
+        dof = self.nbodies - 1 - self.rank
+        moving = list(range(1, self.nbodies))
+        if driving is None:
+            chosen: list[int] = []
+            for b in moving:
+                if len(chosen) == dof:
+                    break
+                rest = [c for c in moving if c not in chosen and c != b]
+                if self._rank(self.assembled, rest) == self.rank:
+                    chosen.append(b)
+            return tuple(chosen)
+        chosen = [int(b) for b in driving]
+        if len(chosen) != dof or len(set(chosen)) != dof or not all(1 <= b < self.nbodies for b in chosen):
+            raise ValueError(f"driving must name {dof} distinct moving bodies (the linkage has {dof} degrees "
+                             f"of freedom), got {[self.body_names[b] if 0 <= b < self.nbodies else b for b in chosen]}")
+        rest = [c for c in moving if c not in chosen]
+        if self._rank(self.assembled, rest) != self.rank:
+            raise ValueError(f"the angles of the driving bodies {[self.body_names[b] for b in chosen]} do not "
+                             "determine the other bodies in the assembled configuration; choose other driving bodies")
+        return tuple(chosen)
+
+    def _predict(self, start: np.ndarray, q: np.ndarray) -> np.ndarray:
+        """First-order predictor: move the dependent angles of ``start`` along the circuit's tangent
+        ``dz/dq = -J_z^+ J_q`` to the driving angles ``q`` (each move clipped to 0.5 rad). Following the
+        tangent keeps the continuation on its branch where two branches cross (a parallelogram's
+        change point)."""
+        jac = self.topology.residual_and_jacobian(start)[1]
+        Jz, Jq = jac[..., self.dependent], jac[..., list(self.driving)]
+        Jzt = np.swapaxes(Jz, -1, -2)
+        A = Jzt @ Jz
+        A = A + (1e-12 * np.trace(A, axis1=-2, axis2=-1)[..., None, None] + 1e-300) * np.eye(len(self.dependent))
+        dq = q - start[..., list(self.driving)]
+        with np.errstate(all="ignore"):
+            dz = -np.linalg.solve(A, (Jzt @ (Jq @ dq[..., None])))[..., 0]
+        out = np.array(start, dtype=float, copy=True)
+        out[..., self.dependent] += np.clip(np.where(np.isfinite(dz), dz, 0.0), -0.5, 0.5)
+        return out
+
+    def _solve(self, start: np.ndarray, q: np.ndarray, iterations: int = 12, predict: bool = False):
+        """Set the driving angles of ``start`` to ``q`` and solve; returns (angles, ok)."""
+        th = self._predict(start, q) if predict else np.array(start, dtype=float, copy=True)
+        th[..., list(self.driving)] = q
+        sol, err = newton(self.topology, th, self.dependent, self.tol, iterations)
+        jump = np.abs(sol[..., self.dependent] - th[..., self.dependent]).max(axis=-1)
+        return sol, (err <= self.accept) & (jump < _JUMP)
+
+    def _march(self, direction: int) -> list[np.ndarray]:
+        """Solutions along the driving angle from the assembled configuration (one direction)."""
+        nodes, prev, h, total = [self.assembled], self.assembled, STEP, 0.0
+        slope = np.zeros(self.nbodies)
+        while total < 2 * np.pi - 1e-12 and h > 1e-9:
+            step = min(h, 2 * np.pi - total)
+            q = prev[self.driving[0]] + direction * step
+            sol, ok = self._solve(prev + slope * step, np.array([q]))
+            if ok:
+                slope = (sol - prev) / step
+                nodes.append(sol)
+                prev, total, h = sol, total + step, min(2 * h, STEP)
+            else:
+                h /= 2
+        return nodes
+
+    def _follow_circuit(self) -> None:
+        d = self.driving[0]
+        up = self._march(+1)
+        q0 = self.assembled[d]
+        closed = (abs(up[-1][d] - q0 - 2 * np.pi) < 1e-9 and
+                  np.allclose(np.angle(np.exp(1j * (up[-1] - self.assembled))), 0.0, atol=1e-6))
+        if closed:
+            self.full_turn = True
+            nodes = up
+            self.q_range = np.array([[q0 - np.pi, q0 + np.pi]])
+        else:
+            down = self._march(-1)
+            nodes = down[::-1] + up[1:]
+            self.q_range = np.array([[nodes[0][d], nodes[-1][d]]])
+        table = np.array(nodes)
+        self._table = (table[:, d], self._hermite(table))
+
+    def _hermite(self, table: np.ndarray) -> np.ndarray:
+        """Cubic Hermite coefficients ``(intervals, 4, dependent)`` of the dependent angles between
+        the table's nodes, from the tangents ``dz/dq`` there; linear where a tangent is too steep."""
+        d, dq = self.driving[0], 1e-3
+        slope = (self._predict(table, table[:, [d]] + dq) - table)[:, self.dependent] / dq
+        smooth = np.all(np.abs(slope) < 0.49 / dq, axis=-1)  # the tangent was not clipped
+        z = table[:, self.dependent]
+        h = np.diff(table[:, d])[:, None]
+        delta, s0, s1 = np.diff(z, axis=0), h * slope[:-1], h * slope[1:]
+        cubic = np.stack([z[:-1], s0, 3 * delta - 2 * s0 - s1, s0 + s1 - 2 * delta], axis=1)
+        line = np.stack([z[:-1], delta, 0 * delta, 0 * delta], axis=1)
+        return np.where((smooth[:-1] & smooth[1:])[:, None, None], cubic, line)
+
+    def _fill_grid(self) -> None:
+        """Flood-fill a grid over one turn of each driving angle from the assembled configuration."""
+        dof = self.dof
+        m = max(9, int(round(4000 ** (1 / dof))) | 1)
+        q0 = self.assembled[list(self.driving)]
+        axes = [q0[i] + np.linspace(-np.pi, np.pi, m) for i in range(dof)]
+        shape = (m,) * dof
+        sol = np.full(shape + (self.nbodies,), np.nan)
+        seen = np.zeros(shape, dtype=bool)
+        centre = (m // 2,) * dof
+        sol[centre], seen[centre] = self.assembled, True
+        frontier = [centre]
+        while frontier:
+            parents, children = {}, []
+            for node in frontier:
+                for i in range(dof):
+                    for s in (-1, 1):
+                        child = list(node)
+                        child[i] += s
+                        child = tuple(child)
+                        if 0 <= child[i] < m and not seen[child]:
+                            seen[child] = True
+                            parents[child] = node
+                            children.append(child)
+            if not children:
+                break
+            start = np.array([sol[parents[c]] for c in children])
+            q = np.array([[axes[i][c[i]] for i in range(dof)] for c in children])
+            got, ok = self._solve(start, q, predict=True)
+            frontier = [c for c, g, o in zip(children, got, ok) if o]
+            for c, g in zip(frontier, got[ok]):
+                sol[c] = g
+        solved = ~np.isnan(sol[..., 0])
+        if solved.all():  # every node of the turn: a full turn when the opposite faces agree modulo 2 pi
+            faces = [np.take(sol, [0, m - 1], axis=i) for i in range(dof)]
+            self.full_turn = all(np.allclose(np.angle(np.exp(1j * (f.take(0, axis=i) - f.take(1, axis=i)))), 0.0,
+                                             atol=1e-6) for i, f in enumerate(faces))
+        idx = np.argwhere(solved)
+        half = np.pi / (m - 1)
+        self.q_range = np.array([[max(axes[i][idx[:, i].min()] - half, axes[i][0]),
+                                  min(axes[i][idx[:, i].max()] + half, axes[i][-1])] for i in range(dof)])
+        self._grid = (np.array([a[0] for a in axes]), 2 * np.pi / (m - 1), sol)
+
+    # ------------------------------------------------------------------ poses
+    def _start(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Starting angles for ``q`` from the table or the grid, and the mask of usable starts."""
+        if self._table is not None:
+            tq, coef = self._table
+            x = tq[0] + np.mod(q[..., 0] - tq[0], 2 * np.pi) if self.full_turn else q[..., 0]
+            j = np.clip(np.searchsorted(tq, x) - 1, 0, len(tq) - 2)
+            w = ((x - tq[j]) / (tq[j + 1] - tq[j]))[..., None]
+            c = coef[j]
+            th = np.zeros(q.shape[:-1] + (self.nbodies,))
+            th[..., self.dependent] = ((c[..., 3, :] * w + c[..., 2, :]) * w + c[..., 1, :]) * w + c[..., 0, :]
+            th[..., self.driving[0]] = q[..., 0]
+            return th, np.ones(q.shape[:-1], dtype=bool)
+        lo, h, sol = self._grid
+        m = sol.shape[0]
+        turns = np.floor((q - lo) / (2 * np.pi)) * 2 * np.pi if self.full_turn else 0.0
+        q = q - turns  # inside the grid's turn; the whole turns are added back to the driving angles
+        idx = np.clip(np.rint((q - lo) / h).astype(int), 0, m - 1)
+        start = sol[tuple(idx[..., i] for i in range(self.dof))]
+        good = ~np.isnan(start[..., 0])
+        start = np.where(good[..., None], start, self.assembled)
+        node_q = lo + idx * h
+        for t in (1 / 3, 2 / 3, 1.0):  # continuation sub-steps from the grid node
+            start, done = self._solve(start, node_q + t * (q - node_q), predict=True)
+            good &= done
+        start[..., list(self.driving)] += turns
+        return start, good
+
+    def angles(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """All body angles ``(..., nbodies)`` (rad) at configurations ``q`` and the reachable mask."""
+        q = np.asarray(q, dtype=float)
+        lo, hi = self.q_range[:, 0], self.q_range[:, 1]
+        if self.full_turn:  # every angle is reachable (the table is looked up modulo a turn)
+            inside = np.ones(q.shape[:-1], dtype=bool)
+        else:
+            inside = np.all((q >= lo - 1e-12) & (q <= hi + 1e-12), axis=-1)
+        if not self.topology.loops:
+            th = np.zeros(q.shape[:-1] + (self.nbodies,))
+            th[..., list(self.driving)] = q
+            return th, inside
+        start, good = self._start(q)
+        if self._grid is not None:  # the last sub-step solved at q already
+            return start, inside & good
+        th, ok = self._solve(start, q)
+        return th, inside & good & ok
+
+    def poses(self, q):
+        th, ok = self.angles(q)
+        return self.topology.poses(th), ok
+
+    # --------------------------------------------------------------- symbolic
+    def symbols(self):
+        import sympy as sp
+
+        return tuple(sp.Symbol(n, real=True) for n in self.names)
+
+    def symbolic_point(self, body, point, syms):
+        """Global position of a body point as sympy expressions (trees only: every angle a symbol)."""
+        if self.topology.loops:
+            raise NotImplementedError("a linkage with loops has numeric kinematics only; its energy is "
+                                      "checked numerically by balance_report()")
+        import sympy as sp
+
+        angle = dict(zip(self.driving, syms))
+        coef = self.topology.point(body, point)
+        x, y = sp.Float(coef[0, 0]) if coef[0, 0] else 0, sp.Float(coef[0, 1]) if coef[0, 1] else 0
+        for b in range(1, self.nbodies):
+            if coef[b].any():
+                px, py = rotate(sp, angle[b], tuple(sp.Float(v) if v else 0 for v in coef[b]))
+                x, y = x + px, y + py
+        return (x, y)

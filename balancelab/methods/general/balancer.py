@@ -1,0 +1,267 @@
+"""`balance`: ZFL springs and counterweights that balance any design, from candidates you name.
+
+Layer: methods. See the package docstring for the method and its justification.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+from ...core.design import Design
+from ...core.elements import Load, Spring, G
+from ...core.validation import planar_point, positive_int
+from ..lustig.solving import InfeasibleDesign
+from .problem import Block, columns
+from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
+
+__all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
+
+_ROUNDS = 8  # alternations for springs whose two ends are both free
+
+
+def _body(design: Design, body, what: str) -> int:
+    if isinstance(body, bool):
+        raise TypeError(f"{what} must be a body name or index, got {body!r}")
+    if isinstance(body, (int, np.integer)):
+        if not 0 <= body < len(design.bodies):
+            raise ValueError(f"{what} must be a body index in 0..{len(design.bodies) - 1}, got {body}")
+        return int(body)
+    if body not in design.bodies:
+        raise ValueError(f"{what} must name a body of the design {design.bodies}, got {body!r}")
+    return design.bodies.index(body)
+
+
+def _end(design: Design, value, what: str):
+    try:
+        body, point = value
+    except (TypeError, ValueError):
+        raise TypeError(f"{what} must be a pair (body, point or None), got {value!r}") from None
+    return (_body(design, body, f"{what} body"), None if point is None else planar_point(f"{what} point (m)", point))
+
+
+def _size(design: Design) -> float:
+    pts = [p for j in design.joints for p in (j.point_i, j.point_j)] + [ld.point for ld in design.loads]
+    return max([abs(v) for p in pts for v in p] + [1e-3])
+
+
+def _box(box, size: float) -> tuple:
+    if box is None:
+        return ((-size, size), (-size, size))
+    try:
+        (xl, xh), (yl, yh) = box
+    except (TypeError, ValueError):
+        raise TypeError(f"box must be ((x_lo, x_hi), (y_lo, y_hi)) in metres, got {box!r}") from None
+    (xl, xh), (yl, yh) = planar_point("box x-range (m)", (xl, xh)), planar_point("box y-range (m)", (yl, yh))
+    if xl > xh or yl > yh:
+        raise ValueError(f"box must have lo <= hi on each axis, got {box!r}")
+    return ((xl, xh), (yl, yh))
+
+
+def _blocks(design: Design, springs, counterweights, box) -> list[Block]:
+    blocks = []
+    for i, cand in enumerate(springs):
+        try:
+            a, b = cand
+        except (TypeError, ValueError):
+            raise TypeError(f"springs[{i}] must be a pair of ends ((body, point or None), (body, point or None)), "
+                            f"got {cand!r}") from None
+        ends = [_end(design, a, f"springs[{i}][0]"), _end(design, b, f"springs[{i}][1]")]
+        if ends[0][0] == ends[1][0]:
+            raise ValueError(f"springs[{i}] joins body {design.bodies[ends[0][0]]!r} to itself")
+        free = 0 if ends[0][1] is None else 1 if ends[1][1] is None else None
+        blocks.append(Block("spring", ends, free, box=box))
+    for i, cand in enumerate(counterweights):
+        body, point = _end(design, cand, f"counterweights[{i}]")
+        if body == 0:
+            raise ValueError(f"counterweights[{i}] is on the ground, where it cannot balance anything")
+        blocks.append(Block("mass", [(body, point)], None if point is not None else 0, box=box))
+    if not blocks:
+        raise ValueError("give at least one candidate spring or counterweight")
+    return blocks
+
+
+def _default_point(design: Design, body: int, size: float) -> tuple[float, float]:
+    """Where a both-free spring end starts: half-way to the body's farthest joint, or above the ground."""
+    pts = [p for j in design.joints for (b, p) in ((j.body_i, j.point_i), (j.body_j, j.point_j)) if b == body]
+    if body == 0:
+        x, y = pts[0] if pts else (0.0, 0.0)
+        return (x, y + size / 2)
+    far = max(pts, key=lambda p: np.hypot(*p), default=(0.0, 0.0))
+    return (far[0] / 2, far[1] / 2) if np.hypot(*far) > 0 else (size / 2, 0.0)
+
+
+def _objective_value(p, x: np.ndarray, objective: str) -> float:
+    val = 0.0
+    for b in p.blocks:
+        k = x[b.cols[0]]
+        if objective == "min_stiffness" and b.kind == "spring" or objective == "min_mass" and b.kind == "mass":
+            val += k
+        elif objective == "min_preload" and b.kind == "spring":
+            val += p.mean[b.cols] @ x[b.cols] + (0.5 * (x[b.cols[1]] ** 2 + x[b.cols[2]] ** 2) / k
+                                                 if b.free is not None and k > 0 else 0.0)
+    return float(val)
+
+
+def _solve_alternating(design, blocks, q, objective):
+    """Solve; springs with two free ends alternate which end is free (each round keeps balance)."""
+    both = [b for b in blocks if b.kind == "spring" and b.ends[0][1] is None and b.ends[1][1] is None]
+    size = _size(design)
+    for b in both:
+        b.ends[1] = (b.ends[1][0], _default_point(design, b.ends[1][0], size))
+        b.free = 0
+    best = None
+    for round_ in range(_ROUNDS if both else 1):
+        p = columns(design, blocks, q)
+        sol = solve(p, objective)
+        value = _objective_value(p, sol.x, objective)
+        if best is not None and value >= best[0] * (1 - 1e-9):
+            break
+        best = (value, p, sol, [list(b.ends) for b in blocks], [b.free for b in blocks])
+        for b in both:  # fix the end just found, free the other
+            k, mx, my = sol.x[b.cols]
+            if k > 0:
+                b.ends[b.free] = (b.ends[b.free][0], (mx / k, my / k))
+                b.free = 1 - b.free
+                b.ends[b.free] = (b.ends[b.free][0], None)
+    _, p, sol, ends, frees = best
+    for b, e, f in zip(blocks, ends, frees):
+        b.ends, b.free = e, f
+    return p, sol
+
+
+def _elements(design: Design, blocks, x: np.ndarray):
+    """New springs and counterweights (zero rates and masses dropped) and their parameters."""
+    springs, loads, params = list(design.springs), list(design.loads), {}
+    size = _size(design)
+    for b in blocks:
+        value = float(x[b.cols[0]])
+        if value <= 0:
+            continue
+        ends = list(b.ends)
+        if b.free is not None:  # round-off (1e-12 of the linkage's size) becomes an exact zero
+            point = [float(x[c] / value) for c in b.cols[1:]]
+            ends[b.free] = (ends[b.free][0], tuple(0.0 if abs(v) < 1e-12 * size else v for v in point))
+        if b.kind == "spring":
+            j = len(springs) + 1
+            springs.append(Spring(value, 0.0, ends[0], ends[1], name=f"k{j}"))
+            params.update({f"k{j}": value, f"a_x{j}": float(ends[0][1][0]), f"a_y{j}": float(ends[0][1][1]),
+                           f"b_x{j}": float(ends[1][1][0]), f"b_y{j}": float(ends[1][1][1])})
+        else:
+            j = sum(ld.kind == "counterweight" for ld in loads) + 1
+            loads.append(Load(ends[0][0], ends[0][1], (0.0, -value * G), name=f"m_c{j}", kind="counterweight"))
+            params.update({f"counter_mass{j}": value, f"c_x{j}": float(ends[0][1][0]), f"c_y{j}": float(ends[0][1][1])})
+    return springs, loads, params
+
+
+def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (), objective: str = "min_preload",
+            *, box=None, n: int | None = None) -> Design:
+    """Balance ``design`` with ZFL springs and counterweights chosen among candidates.
+
+    Parameters
+    ----------
+    design : Design
+        Any design (any kinematics, loads, springs of any free length); what it carries
+        already is kept and balanced against.
+    springs : sequence of ((body, point or None), (body, point or None))
+        Candidate ZFL springs between two attachments (body name or index, local point in
+        m); ``None`` lets the solver place that end.
+    counterweights : sequence of (body, point or None)
+        Candidate counterweights (kg, solved for) at local points, ``None`` to place them.
+    objective : {"min_preload", "min_stiffness", "min_mass"}
+        Which balanced solution to pick when there are free choices: the least spring
+        energy (Singh's minimum preload: the constant total energy as low as it goes), the
+        smallest total stiffness (N/m), or the smallest total counter mass (kg).
+    box : ((x_lo, x_hi), (y_lo, y_hi)), optional
+        Where free points may go, in their bodies' local frames (m); by default a square
+        of half-width the linkage's largest joint or load coordinate.
+    n : int, optional
+        Number of sampled configurations (default: enough for the unknowns, at least 240).
+
+    Returns
+    -------
+    Design
+        A copy with the springs (``k > 0``; candidates that come out at zero are left out)
+        and counterweights added; its ``parameters`` hold the rates ``k<j>``, the ends
+        ``a_x<j>, a_y<j>, b_x<j>, b_y<j>``, the counter masses and points, and
+        ``conditions_rank`` and ``free_choices`` (unknowns minus the rank). For a spring with
+        both ends free the count is that of the last linear round (one end free).
+
+    Raises
+    ------
+    InfeasibleDesign
+        When no admissible solution exists; the message names the energy terms that
+        cannot be cancelled and the candidates that would need a negative value.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> lk = bl.Linkage("lever")
+    >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> d = bl.balance(lk.build(), springs=[(("arm", (0.25, 0.0)), ("ground", (0.0, 0.4)))])
+    >>> round(d.parameters["k1"], 6), d.balance_report().balanced   # k = m g l / (a b)
+    (98.1, True)
+    """
+    if not isinstance(design, Design):
+        raise TypeError(f"design must be a balancelab Design, got {type(design).__name__}")
+    if objective not in OBJECTIVES:
+        raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
+    blocks = _blocks(design, list(springs), list(counterweights), _box(box, _size(design)))
+    m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20)
+    q = design.sample(max(m, 6 * 3 * len(blocks)) if n is None else m, seed=0)
+    vl, vs = design.element_energies(q)
+    if not (np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) > 0:
+        raise ValueError(f"{design.name}: nothing to balance: its loads and springs exchange no energy as it "
+                         "moves (keep at least one load, or the spring that loads a spring-loaded mechanism)")
+    p, sol = _solve_alternating(design, blocks, q, objective)
+    new_springs, new_loads, params = _elements(design, p.blocks, sol.x)
+    params.update(conditions_rank=float(sol.rank), free_choices=float(sol.free_choices))
+    out = design.replace(name=f"{design.name}, balanced ({objective})", springs=new_springs, loads=new_loads,
+                         parameters={**design.parameters, **params})
+    _verify(out, design.sample(400, seed=1))
+    return out
+
+
+def _verify(design: Design, q: np.ndarray) -> None:
+    """The verdict of :meth:`Design.balance_report` on fresh configurations ``q`` (its energy
+    criterion, without the generalized forces), or InfeasibleDesign."""
+    vl, vs = design.element_energies(q)
+    spread = float(np.ptp(vl.sum(-1) + vs.sum(-1)))
+    loads = float(np.ptp(vl, axis=0).sum()) if vl.size else 0.0
+    scale = loads if loads > 1e-12 * spread else float(np.ptp(vs, axis=0).sum())
+    if not spread <= 1e-9 * scale:
+        raise InfeasibleDesign(f"{design.name}: the solution found leaves the energy varying by {spread:.3g} J "
+                               f"over fresh configurations (of {scale:.3g} J); the sample missed part of the "
+                               "range: try a larger n")
+
+
+def free_choices(design: Design, springs: Sequence = (), counterweights: Sequence = (), *, n: int | None = None
+                 ) -> Solution:
+    """Rank of the balance conditions and free choices for these candidates (no sign constraints).
+
+    Returns
+    -------
+    Solution
+        Only ``rank``, ``nvar`` and ``free_choices`` are meaningful (``x`` is the least-norm
+        unsigned solution).
+
+    Examples
+    --------
+    A lever with one ZFL spring whose anchor is free: balance fixes ``k b_y`` and ``b_x = 0``,
+    one choice is left.
+
+    >>> import balancelab as bl
+    >>> lk = bl.Linkage("lever")
+    >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> s = free_choices(lk.build(), springs=[(("arm", (0.25, 0.0)), ("ground", None))])
+    >>> s.nvar, s.rank, s.free_choices
+    (3, 2, 1)
+    """
+    blocks = _blocks(design, list(springs), list(counterweights), _box(None, _size(design)))
+    q = design.sample(240 if n is None else positive_int("n", n, minimum=20), seed=0)
+    p = columns(design, blocks, q)
+    r = rank_of(p.A / column_norms(p))[0]
+    x = np.linalg.lstsq(p.A, -p.v, rcond=1e-12)[0]
+    return Solution(x, r, p.nvar, float(np.ptp(p.A @ x + p.v)))

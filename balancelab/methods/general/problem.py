@@ -1,0 +1,168 @@
+"""The balance problem of a design and candidate ZFL springs and counterweights, as linear algebra.
+
+Every unknown enters the energy linearly once the right variables are chosen:
+
+* a ZFL spring between two fixed points: its rate ``k``; energy ``k/2 |w_a - w_b|^2``;
+* a ZFL spring with one free end ``p`` on body ``c`` (the other end at ``w``): ``k`` and
+  the moment ``m = k p``. With ``u = w - o_c`` (``o_c`` the origin of body ``c``),
+  ``k/2 |u - R_c p|^2 = k/2 |u|^2 - (R_c^T u) . m + k/2 |p|^2`` and the last term is a
+  constant: the energy is linear in ``(k, m)`` (the stiffness-matrix observation of
+  Lustig et al., written for one end at a time);
+* a counterweight of mass ``M`` at a fixed point: ``M g y``; at a free point ``p`` of body
+  ``c``: ``g (M y_c + (R_c (M p))_y)``, linear in ``(M, M p)``.
+
+A point kept inside a box ``lo <= p <= hi`` is the linear constraint ``k lo <= m <= k hi``.
+:func:`columns` evaluates each variable's energy (its *column*) at sampled configurations
+of the design's own kinematics; balance is ``A x + v = const`` with ``v`` the energy of
+what the design carries already. :func:`harmonics` names the terms of an energy residual
+(``cos theta_b``, ``sin(theta_c - theta_b)`` ...), for the message of an infeasible design.
+Layer: methods.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ...core.elements import G
+from ...core.kinematics import body_to_world
+
+__all__ = ["Block", "Problem", "columns", "harmonics"]
+
+
+@dataclass
+class Block:
+    """One candidate: its kind, its ends and where its variables sit in ``x``.
+
+    ``kind`` is ``"spring"`` or ``"mass"``; ``ends`` the attachments ``(body, point or
+    None)`` (one for a counterweight); ``free`` the index of the free end (``None`` if
+    both ends are fixed); ``cols`` the indices of ``(k or M, m_x, m_y)`` in ``x``; ``box``
+    the local box ``((x_lo, x_hi), (y_lo, y_hi))`` (m) of the free point.
+    """
+
+    kind: str
+    ends: list
+    free: int | None = None
+    cols: list = field(default_factory=list)
+    box: tuple = ((-1.0, 1.0), (-1.0, 1.0))
+
+
+@dataclass
+class Problem:
+    """Sampled balance problem: ``A`` (centred columns), ``v`` (centred known energy), and extras."""
+
+    A: np.ndarray
+    v: np.ndarray
+    mean: np.ndarray  # mean of each uncentred spring column (J per unit variable): the preload's linear part
+    blocks: list
+    q: np.ndarray
+    poses: np.ndarray
+    load_spread: float
+    design: object = None
+
+    @property
+    def nvar(self) -> int:
+        """Number of unknowns."""
+        return self.A.shape[1]
+
+
+def _world(poses, body, point):
+    x, y = body_to_world(poses, [body], [point])
+    return np.stack([x[..., 0], y[..., 0]], -1)
+
+
+def _spring_columns(poses, block):
+    """Columns of one spring: ``[k]`` or ``[k, m_x, m_y]`` (J per N/m and per N)."""
+    (ba, pa), (bb, pb) = block.ends
+    if block.free is None:
+        d = _world(poses, ba, pa) - _world(poses, bb, pb)
+        return [0.5 * (d * d).sum(-1)]
+    (bf, _), (bx, px) = (block.ends[1], block.ends[0]) if block.free == 1 else (block.ends[0], block.ends[1])
+    u = _world(poses, bx, px) - poses[:, bf, :2]
+    c, s = np.cos(poses[:, bf, 2]), np.sin(poses[:, bf, 2])
+    return [0.5 * (u * u).sum(-1), -(c * u[:, 0] + s * u[:, 1]), -(-s * u[:, 0] + c * u[:, 1])]
+
+
+def _mass_columns(poses, block):
+    """Columns of one counterweight: ``[M]`` or ``[M, M p_x, M p_y]`` (J per kg and per kg m)."""
+    body, point = block.ends[0]
+    if block.free is None:
+        return [G * _world(poses, body, point)[:, 1]]
+    a = poses[:, body, 2]
+    return [G * poses[:, body, 1], G * np.sin(a), G * np.cos(a)]
+
+
+def columns(design, blocks, q) -> Problem:
+    """The sampled problem of ``design`` with candidate ``blocks`` at configurations ``q``.
+
+    Parameters
+    ----------
+    design : Design
+    blocks : list of Block
+        Their ``cols`` are set here.
+    q : numpy.ndarray, shape (m, dof)
+        Reachable configurations (rad).
+
+    Returns
+    -------
+    Problem
+
+    Examples
+    --------
+    A lever (2 kg at 0.5 m) and one ZFL spring between fixed points: one column.
+
+    >>> import balancelab as bl
+    >>> lk = bl.Linkage("lever")
+    >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> d = lk.build()
+    >>> p = columns(d, [Block("spring", [(1, (0.25, 0.0)), (0, (0.0, 0.4))])], d.sample(50))
+    >>> p.A.shape, round(float(np.ptp(p.v)), 6) <= 2 * 2.0 * 9.81 * 0.5
+    ((50, 1), True)
+    """
+    poses = design.poses(q)
+    cols, mean = [], []
+    for block in blocks:
+        new = _spring_columns(poses, block) if block.kind == "spring" else _mass_columns(poses, block)
+        block.cols = list(range(len(cols), len(cols) + len(new)))
+        cols += new
+        mean += [float(np.mean(c)) if block.kind == "spring" else 0.0 for c in new]
+    A = np.stack(cols, -1) if cols else np.zeros((len(q), 0))
+    vl, vs = design.element_energies(q)
+    v = vl.sum(-1) + vs.sum(-1)
+    spread = float(np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) if (vl.size or vs.size) else 0.0
+    return Problem(A - A.mean(0), v - v.mean(), np.array(mean), blocks, q, poses, spread, design)
+
+
+def harmonics(design, poses, residual, top: int = 4) -> list[tuple[str, float]]:
+    """The largest trigonometric terms of an energy ``residual`` (J) sampled at ``poses``.
+
+    Fits ``residual`` with ``cos theta_b``, ``sin theta_b`` and ``cos``/``sin`` of the
+    differences of the body angles (every ZFL spring and weight energy is a combination
+    of these) and returns the ``top`` terms with the largest amplitude, as
+    ``(term, coefficient in J)``; for a linkage with loops the fit is the least-norm one.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> lk = bl.Linkage("lever")
+    >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    >>> d = lk.build()
+    >>> q = d.sample(40)
+    >>> [(name, round(c, 9)) for name, c in harmonics(d, d.poses(q), 3.0 * np.sin(q[:, 0]))]
+    [('sin θ_1', 3.0)]
+    """
+    nb = len(design.bodies)
+    th = poses[..., 2]
+    feats, names = [], []
+    for b in range(1, nb):
+        feats += [np.cos(th[:, b]), np.sin(th[:, b])]
+        names += [f"cos θ_{b}", f"sin θ_{b}"]
+        for c in range(b + 1, nb):
+            feats += [np.cos(th[:, c] - th[:, b]), np.sin(th[:, c] - th[:, b])]
+            names += [f"cos(θ_{c} - θ_{b})", f"sin(θ_{c} - θ_{b})"]
+    F = np.stack(feats, -1)
+    F = F - F.mean(0)
+    coef = np.linalg.lstsq(F, residual - residual.mean(), rcond=1e-10)[0]
+    order = np.argsort(-np.abs(coef))[:top]
+    return [(names[i], float(coef[i])) for i in order if abs(coef[i]) > 1e-12 * max(np.abs(coef).max(), 1e-300)]

@@ -1,0 +1,224 @@
+"""Solving the sampled balance problem: rank, non-negative solutions, objectives, infeasibility.
+
+``A x + v = const`` over the sampled configurations is reduced, through a singular value
+decomposition of the column-scaled ``A``, to ``rank`` independent conditions with
+orthonormal rows. The number of *free choices* is ``nvar - rank``: the dimension of the
+set of solutions when signs and boxes are ignored. A linear program (HiGHS) then picks the
+solution with ``k >= 0``, counter masses ``>= 0`` and free points in their boxes that
+minimizes the objective; minimum preload with free points (a convex objective,
+``k/2 |p|^2 = |m|^2 / (2 k)``) continues from there with SLSQP. The result is finally
+polished to round-off by a least-norm correction of the variables not at a bound.
+Layer: methods.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..lustig.solving import InfeasibleDesign
+from .problem import Problem, harmonics
+
+__all__ = ["OBJECTIVES", "Solution", "solve", "rank_of", "column_norms"]
+
+#: what ``objective`` may ask for
+OBJECTIVES = ("min_preload", "min_stiffness", "min_mass")
+
+_RANK_TOL = 1e-9
+
+
+class Solution:
+    """Values ``x`` of the unknowns, the rank of the conditions and the free choices left."""
+
+    def __init__(self, x: np.ndarray, rank: int, nvar: int, residual: float):
+        self.x, self.rank, self.nvar, self.residual = x, rank, nvar, residual
+
+    @property
+    def free_choices(self) -> int:
+        """Unknowns minus the rank of the balance conditions."""
+        return self.nvar - self.rank
+
+
+def rank_of(M: np.ndarray) -> tuple[int, np.ndarray, np.ndarray, np.ndarray]:
+    """Numeric rank of ``M`` (singular values above 1e-9 of the largest) and its SVD ``(U, s, Vt)``.
+
+    Examples
+    --------
+    >>> rank_of(np.array([[1.0, 2.0], [2.0, 4.0], [0.0, 0.0]]))[0]
+    1
+    """
+    if M.shape[1] == 0:
+        return 0, np.zeros((M.shape[0], 0)), np.zeros(0), np.zeros((0, 0))
+    U, s, Vt = np.linalg.svd(M, full_matrices=False)
+    r = int((s > _RANK_TOL * max(s.max(), 1e-300)).sum())
+    return r, U, s, Vt
+
+
+def column_norms(p: Problem) -> np.ndarray:
+    """Norms of the columns of ``p.A``; columns of round-off size (a spring whose length never
+    changes) are set to exact zeros and get the largest norm, so that scaling stays finite.
+
+    Examples
+    --------
+    >>> p = Problem(np.array([[1.0, 1e-17], [-1.0, 0.0]]), np.zeros(2), np.zeros(2), [], None, None, 0.0)
+    >>> column_norms(p).round(4).tolist(), p.A[:, 1].tolist()
+    ([1.4142, 1.4142], [0.0, 0.0])
+    """
+    D = np.linalg.norm(p.A, axis=0)
+    top = max(D.max(initial=0.0), 1e-300)
+    dead = D <= 1e-12 * top
+    p.A[:, dead] = 0.0
+    return np.where(dead, top, D)
+
+
+def _constraints(p: Problem, S: np.ndarray):
+    """Bounds and box inequalities on the scaled variables ``y = x / S``."""
+    n = p.nvar
+    bounds = [(None, None)] * n
+    rows = []
+    for b in p.blocks:
+        bounds[b.cols[0]] = (0.0, None)
+        if b.free is None:
+            continue
+        k = b.cols[0]
+        for axis, (lo, hi) in enumerate(b.box):
+            m = b.cols[1 + axis]
+            for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
+                row = np.zeros(n)
+                row[m], row[k] = sign * S[m], -sign * lim * S[k]
+                rows.append(row)
+    A_ub = np.array(rows) if rows else None
+    return bounds, A_ub, (np.zeros(len(rows)) if rows else None)
+
+
+def _cost(p: Problem, objective: str) -> np.ndarray:
+    c = np.zeros(p.nvar)
+    for b in p.blocks:
+        if objective == "min_stiffness" and b.kind == "spring":
+            c[b.cols[0]] = 1.0
+        elif objective == "min_mass" and b.kind == "mass":
+            c[b.cols[0]] = 1.0
+        elif objective == "min_preload" and b.kind == "spring":
+            c[b.cols] = p.mean[b.cols]
+    return c
+
+
+def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds) -> np.ndarray:
+    """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP."""
+    from scipy.optimize import minimize
+
+    free = [b.cols for b in p.blocks if b.kind == "spring" and b.free is not None]
+
+    def f(y):
+        x = D * y
+        val = c @ x
+        grad = c * D
+        for k, mx, my in free:
+            kk = max(x[k], 1e-12 * D[k])
+            q = x[mx] ** 2 + x[my] ** 2
+            val += 0.5 * q / kk
+            grad[k] += -0.5 * q / kk ** 2 * D[k]
+            grad[mx] += x[mx] / kk * D[mx]
+            grad[my] += x[my] / kk * D[my]
+        return val, grad
+
+    cons = [{"type": "eq", "fun": lambda y: eq[0] @ y - eq[1], "jac": lambda y: eq[0]}]
+    if ineq[0] is not None:
+        cons.append({"type": "ineq", "fun": lambda y: -(ineq[0] @ y), "jac": lambda y: -ineq[0]})
+    res = minimize(f, y0, jac=True, method="SLSQP", bounds=bounds, constraints=cons,
+                   options={"maxiter": 500, "ftol": 1e-15})
+    return res.x if np.all(np.isfinite(res.x)) else y0
+
+
+def _polish(p: Problem, x: np.ndarray, U: np.ndarray) -> np.ndarray:
+    """Least-norm correction of the variables off their bounds, to round-off balance.
+
+    The sampled equations are compressed first to the ``rank`` rows ``U^T A`` (``U`` the
+    left singular vectors of the scaled ``A``): the same least-squares problem, smaller."""
+    at_bound = np.zeros(p.nvar, dtype=bool)
+    for b in p.blocks:
+        if x[b.cols[0]] <= 1e-12 * max(np.abs(x).max(), 1e-300):
+            at_bound[b.cols] = True
+            x[b.cols] = 0.0
+    live = ~at_bound
+    C, d = U.T @ p.A, U.T @ p.v
+    for _ in range(3):
+        if live.any():
+            x[live] -= np.linalg.lstsq(C[:, live], C @ x + d, rcond=1e-13)[0]
+    return x
+
+
+def solve(p: Problem, objective: str) -> Solution:
+    """Solve the sampled problem ``p`` for ``objective`` (one of :data:`OBJECTIVES`).
+
+    Returns
+    -------
+    Solution
+        ``x`` (rates, masses and moments in the order of ``p.blocks``' columns), the rank of
+        the conditions and the free choices.
+
+    Raises
+    ------
+    InfeasibleDesign
+        When no solution with non-negative rates and masses (and free points in their
+        boxes) balances the design; the message names the energy terms left over.
+
+    Examples
+    --------
+    Used by :func:`balancelab.balance`; see there.
+    """
+    from scipy.optimize import linprog
+
+    D = column_norms(p)
+    r, U, s, Vt = rank_of(p.A / D)
+    sigma = max(np.linalg.norm(p.v), 1e-300)
+    eq = (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma)
+    S = sigma / D  # x = S y
+    bounds, A_ub, b_ub = _constraints(p, S)
+    c = _cost(p, objective)
+    convex = objective == "min_preload" and any(b.free is not None and b.kind == "spring" for b in p.blocks)
+    start = _cost(p, "min_stiffness") if convex else c  # the linear part alone is unbounded with free points
+    lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+    if lp.status != 0:
+        raise InfeasibleDesign(_why(p, D, objective, ""))
+    y = lp.x
+    if convex:
+        y = _preload(p, S, c, y, eq, (A_ub, b_ub), bounds)
+    x = _polish(p, S * y, U[:, :r])
+    res = p.A @ x + p.v
+    spread = float(np.ptp(res)) if len(res) else 0.0
+    if spread > 1e-10 * max(p.load_spread, 1e-300):
+        raise InfeasibleDesign(_why(p, D, objective, f"; the best solution leaves {spread:.3g} J"))
+    return Solution(x, r, p.nvar, spread)
+
+
+def _label(p: Problem, index: int) -> str:
+    """``springs[i]`` or ``counterweights[j]``: a candidate as the caller wrote it."""
+    kind = p.blocks[index].kind
+    return f"{kind}s[{sum(b.kind == kind for b in p.blocks[:index])}]".replace("masss", "counterweights")
+
+
+def _why(p: Problem, D: np.ndarray, objective: str, detail: str) -> str:
+    """The message of an infeasible design: which energy terms cannot be cancelled, and why."""
+    from scipy.optimize import lsq_linear
+
+    lo = np.full(p.nvar, -np.inf)
+    for b in p.blocks:
+        lo[b.cols[0]] = 0.0
+    free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] * (1 / D)
+    signed = lsq_linear(p.A / D, -p.v, bounds=(lo * D, np.full(p.nvar, np.inf))).x / D
+    unsigned = p.A @ free + p.v
+    head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
+    if np.ptp(unsigned) > 1e-10 * max(p.load_spread, 1e-300):
+        return head + ("even with rates and masses of any sign they cannot make the energy constant; "
+                       f"left over: {_terms(p, unsigned)}")
+    big = max(np.abs(free).max(), 1e-300)
+    need = [_label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
+    cause = (f"balance needs a negative rate or mass for {', '.join(need)}" if need else
+             "balance needs a free point outside its box")
+    return head + f"{cause}; with rates and masses >= 0 these energy terms cannot all vanish: " \
+        f"{_terms(p, p.A @ signed + p.v)}"
+
+
+def _terms(p: Problem, residual: np.ndarray) -> str:
+    """``"0.98 J × cos θ_1, ..."``: the largest terms of an energy residual, as text."""
+    terms = harmonics(p.design, p.poses, residual)
+    return ", ".join(f"{v:.3g} J × {name}" for name, v in terms) or f"{np.ptp(residual):.3g} J"
