@@ -10,7 +10,13 @@ The site must load nothing from a CDN, so MathJax 3, require.js and
 ``@jupyter-widgets/html-manager`` are taken from the npm registry (``npm pack`` with
 exact versions; npm checks each tarball's integrity) and unpacked into the git-ignored
 ``book/_vendor/vendor/``, which Sphinx publishes at ``/vendor/`` through
-``html_extra_path``. Only the files the pages use are kept (about 10 MB).
+``html_extra_path``; ``book/_ext/offline_assets.py`` then drops from the site what no page
+requests (the widget manager and require.js when no page has widgets).
+
+The chapters' kernels start with the course's figure style installed
+(:func:`balancelab.viz.style.install`: every figure at the house resolution, one image per
+column of panels so that figures stack on a phone): the build points ``IPYTHONDIR`` at
+``_build/ipython``, whose kernel configuration runs that one line before the first cell.
 """
 from __future__ import annotations
 
@@ -38,6 +44,24 @@ PACKAGES = {
 MATHJAX_KEEP = ("tex-chtml.js", "core.js", "loader.js", "startup.js", "input", "output/chtml",
                 "output/chtml.js", "ui", "a11y", "adaptors", "sre")
 STAMP = VENDOR / "VERSIONS.txt"
+IPYTHONDIR = ROOT / "_build" / "ipython"
+#: IPython kernel configuration of the book's kernels (see the module docstring).
+KERNEL_CONFIG = (
+    "# Written by scripts/build_book.py: the course's figure style in every chapter's kernel.\n"
+    "c.InteractiveShellApp.exec_lines = [\n"
+    "    'import balancelab.viz.style as _bl_style; _bl_style.install(); del _bl_style',\n"
+    "]\n"
+)
+
+
+def kernel_profile() -> Path:
+    """Write the kernels' IPython configuration into :data:`IPYTHONDIR`; return that folder."""
+    profile = IPYTHONDIR / "profile_default"
+    profile.mkdir(parents=True, exist_ok=True)
+    config = profile / "ipython_kernel_config.py"
+    if not config.is_file() or config.read_text() != KERNEL_CONFIG:
+        config.write_text(KERNEL_CONFIG)
+    return IPYTHONDIR
 
 
 def _stamp_text() -> str:
@@ -137,6 +161,7 @@ def build(force: bool = False, all_pages: bool = False, quiet: bool = False, toc
     # The kernels inherit this process's environment: a non-interactive MPLBACKEND (test suites
     # set Agg) would stop matplotlib's inline backend, and every figure would vanish from the pages.
     os.environ.pop("MPLBACKEND", None)
+    os.environ["IPYTHONDIR"] = str(kernel_profile())
     from jupyter_book.sphinx import build_sphinx
 
     # What `jb build . -W -n --keep-going` passes, plus forced execution when asked.

@@ -9,6 +9,7 @@ tests themselves). The browser part needs Debian's ``chromium`` (installed by
 from __future__ import annotations
 
 import functools
+import html
 import http.server
 import os
 import re
@@ -57,6 +58,43 @@ def site() -> Path:
 
 
 # --------------------------------------------------------------------------- the build
+# ------------------------------------------------------------------------- publishing
+WORKFLOW = ROOT / ".github" / "workflows" / "pages.yml"
+GITLAB = ROOT / ".gitlab-ci.yml"
+README_COMMANDS = ("bash scripts/course.sh test", "bash scripts/course.sh book")
+
+
+def test_pages_workflow_runs_the_readme_commands_and_publishes_the_site():
+    wf = yaml.safe_load(WORKFLOW.read_text())
+    on = wf.get("on", wf.get(True))   # YAML 1.1 reads the key `on` as True
+    assert "push" in on and "workflow_dispatch" in on
+    assert wf["permissions"] == {"contents": "read", "pages": "write", "id-token": "write"}
+    build, deploy = wf["jobs"]["build"], wf["jobs"]["deploy"]
+    runs = [step["run"] for step in build["steps"] if "run" in step]
+    for command in README_COMMANDS:
+        assert command in (ROOT / "README.md").read_text(), command
+        assert any(command in r for r in runs), f"the workflow does not run {command!r}"
+    uses = {step["uses"].split("@")[0]: step for step in build["steps"] + deploy["steps"] if "uses" in step}
+    assert uses["actions/upload-pages-artifact"]["with"]["path"] == "_build/html"
+    assert "actions/deploy-pages" in uses and "actions/checkout" in uses
+    assert deploy["needs"] == "build" and deploy["environment"]["name"] == "github-pages"
+    assert build["timeout-minutes"] <= 90
+    gitlab = yaml.safe_load(GITLAB.read_text())["pages"]
+    for command in README_COMMANDS:
+        assert command in gitlab["script"]
+    assert gitlab["artifacts"]["paths"] == ["public"] and any("_build/html public" in c for c in gitlab["script"])
+
+
+@pytest.mark.parametrize("path, schema", [(".github/workflows/pages.yml", "vendor.github-workflows"),
+                                          (".gitlab-ci.yml", "vendor.gitlab-ci")])
+def test_ci_files_pass_their_schema_linter(path, schema):
+    """check-jsonschema validates against the schema it bundles (offline)."""
+    pytest.importorskip("check_jsonschema")
+    r = subprocess.run([sys.executable, "-m", "check_jsonschema", "--builtin-schema", schema, str(ROOT / path)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
 def test_toc_lists_every_chapter_in_order():
     files = _toc_files()
     assert [f.split("/")[-1] for f in files] == CHAPTERS
@@ -87,8 +125,61 @@ def test_site_has_every_page_and_its_notebook(site):
     for nb in NOTEBOOKS:
         assert (site / "_sources" / "book" / f"{nb}.ipynb").is_file(), f"no .ipynb download for {nb}"
     assert (site / "vendor" / "mathjax" / "tex-chtml.js").is_file()
-    assert (site / "vendor" / "requirejs" / "require.js").is_file()
-    assert (site / "vendor" / "html-manager" / "embed-amd.js").is_file()
+
+
+def test_downloaded_notebooks_are_plain_jupyter_without_solutions(site):
+    import nbformat
+
+    for name in NOTEBOOKS:
+        nb = nbformat.read(str(site / "_sources" / "book" / f"{name}.ipynb"), as_version=4)
+        nbformat.validate(nb)
+        text = "\n".join(c.source for c in nb.cells)
+        for raw in ("```{", "{cite:", "{numref}`", "{eq}`", "{doc}`", "solution-start", ":::{"):
+            assert raw not in text, f"{name}.ipynb still holds raw MyST {raw!r}"
+        assert all(not c.get("outputs") for c in nb.cells if c.cell_type == "code"), name
+        source = (ROOT / "book" / f"{name}.md").read_text()
+        if "solution-start" in source:
+            assert "Exercise" in text, name
+        assert nb.metadata["kernelspec"]["name"] == "python3"
+
+
+def test_figures_keep_the_alt_text_their_page_wrote(site):
+    for name in NOTEBOOKS:
+        source = (ROOT / "book" / f"{name}.md").read_text()
+        page = (site / "book" / f"{name}.html").read_text()
+        for alt in re.findall(r"^\s+alt: (.+)$", source, re.MULTILINE):
+            start = html.escape(" ".join(alt.split())[:40], quote=True)
+            assert re.search(r'<img [^>]*alt="(?:panel \d of \d: )?' + re.escape(start), page), \
+                f"{name}: no image carries the alt text {alt[:60]!r}"
+
+
+def test_site_ships_only_assets_some_page_requests(site):
+    pages = [p.read_text(errors="replace") for p in site.rglob("*.html") if p.relative_to(site).parts[0] != "vendor"]
+    widgets = any("html-manager/embed-amd.js" in text for text in pages)
+    # the widget manager and require.js go with the first page that embeds widgets
+    assert (site / "vendor" / "html-manager" / "embed-amd.js").is_file() == widgets
+    assert (site / "vendor" / "requirejs" / "require.js").is_file() == widgets
+    assert not list((site / "_static").rglob("*.map")), "JavaScript source maps are never requested"
+    assert not (site / "_static" / "locales").exists()
+    # ... but the vendored copy keeps them for pages that will have widgets
+    assert (ROOT / "book" / "_vendor" / "vendor" / "html-manager" / "embed-amd.js").is_file()
+
+
+def test_launch_buttons_open_only_what_they_can(site):
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    hub = cfg["launch_buttons"].get("jupyterhub_url") or ""
+    for name in NOTEBOOKS:
+        text = (site / "book" / f"{name}.html").read_text()
+        assert "mybinder.org/v2/gh/" in text, f"{name}: no Binder button"
+        # Colab cannot open a MyST page: no Colab button on a chapter
+        assert "colab.research.google.com" not in text or name == "labs", f"{name}: a Colab button"
+        assert ("hub/user-redirect" in text) == bool(hub), f"{name}: a JupyterHub button without a hub"
+        assert "&amp;amp;" not in text, f"{name}: a link escaped twice"
+    labs = (site / "book" / "labs.html").read_text()
+    links = [html.unescape(h) for h in re.findall(r'href="([^"]*labs(?:/|%2F)student[^"]*)"', labs)]
+    assert sum("mybinder.org/v2/gh/" in h for h in links) == 6, links
+    assert sum(h.startswith("https://colab.research.google.com/github/") for h in links) == 6, links
+    assert sum("hub/user-redirect" in h for h in links) == (6 if hub else 0), links
 
 
 def test_no_page_loads_anything_from_another_host(site):
@@ -202,18 +293,88 @@ async () => {
   const heads = Array.from(main.querySelectorAll("h1, h2, h3, h4, h5, h6")).map(h => +h.tagName[1]);
   const figures = Array.from(main.querySelectorAll("figure img")).filter(i => !(i.alt || "").trim()).length;
   const links = Array.from(document.querySelectorAll("a[href]")).map(a => a.href);
-  return {maths: maths.length, unrendered, errors, raw, broken, noalt, heads, figures, links,
+  // what a reader sees of the kernel's stderr or of a warning
+  const stderr = Array.from(main.querySelectorAll(".output.stderr, .stderr")).map(e => e.textContent.slice(0, 80));
+  const warned = Array.from(main.querySelectorAll(".cell_output"))
+    .map(e => e.textContent).filter(t => /(Warning|Traceback \\(most recent)/.test(t)).map(t => t.slice(0, 80));
+  // every figure and animation frame: natural and rendered width, and the start of its PNG (its dpi)
+  const pictures = Array.from(main.querySelectorAll(".cell_output img, div.animation img, .bl-figure img"))
+    .filter(i => i.naturalWidth >= 150)
+    .map(i => ({src: i.src.startsWith("data:") ? i.src.slice(0, 4022) : i.src, natural: i.naturalWidth,
+                shown: i.getBoundingClientRect().width}));
+  const article = document.querySelector("article.bd-article") || main;
+  return {maths: maths.length, unrendered, errors, raw, broken, noalt, heads, figures, links, stderr, warned,
+          pictures, content: article.clientWidth,
+          overflow: document.documentElement.scrollWidth - window.innerWidth,
           animations: document.querySelectorAll("div.animation").length};
 }
 """
 
 
-def test_every_page_in_a_browser(site, server, browser):
+def _png_dpi(src: str, site: Path) -> float:
+    """The dpi a PNG declares (72 when it declares none), from a data URI's start or a site file."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    if src.startswith("data:"):
+        head = src.split(",", 1)[1]
+        data = base64.b64decode(head[: len(head) // 4 * 4])
+    else:
+        data = (site / unquote(urlsplit(src).path.lstrip("/"))).read_bytes()
+    try:
+        dpi = Image.open(io.BytesIO(data)).info.get("dpi", (72, 72))[0]
+    except Exception:  # not a PNG header: the test reports it as unreadable
+        return 0.0
+    return float(dpi)
+
+
+def _figure_problems(res: dict, site: Path, where: str) -> list[str]:
+    """Figures whose smallest text (MIN_FONT_PT at their dpi, as shown) is under MIN_FONT_PX."""
+    from balancelab.viz import style
+
+    problems = []
+    for pic in res["pictures"]:
+        dpi = _png_dpi(pic["src"], site)
+        if dpi < 110:
+            problems.append(f"{where}: a figure at {dpi:.0f} dpi (< 110): {pic['src'][:60]}")
+            continue
+        px = style.MIN_FONT_PT * dpi / 72 * pic["shown"] / pic["natural"]
+        if px < style.MIN_FONT_PX - 0.05:
+            problems.append(f"{where}: a figure's smallest text renders {px:.1f} px high "
+                            f"({pic['natural']} px wide, shown {pic['shown']:.0f} px)")
+    return problems
+
+
+def _navigation_problems(page, width: int, where: str) -> list[str]:
+    """The visible menu button opens the table of contents (a drawer on narrow screens)."""
+    from playwright.sync_api import expect
+
+    button = page.locator("button.primary-toggle").filter(visible=True)
+    if button.count() != 1:
+        return [f"{where}: {button.count()} visible menu buttons"]
+    if width >= 992:
+        nav = page.locator("#pst-primary-sidebar nav.bd-docs-nav")
+        return [] if nav.is_visible() else [f"{where}: no table of contents at {width} px"]
+    button.click()
+    drawer = page.locator("#pst-primary-sidebar-modal")
+    try:
+        expect(drawer.locator("nav.bd-docs-nav")).to_be_visible(timeout=5000)
+    except AssertionError:
+        return [f"{where}: the menu button did not open the table of contents at {width} px"]
+    page.keyboard.press("Escape")
+    expect(drawer).to_be_hidden(timeout=5000)
+    return []
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_every_page_in_a_browser(site, server, browser, width):
     SHOTS.mkdir(parents=True, exist_ok=True)
     problems: list[str] = []
     pages = _pages(site)
     assert len(pages) >= len(CHAPTERS)
-    ctx = browser.new_context(viewport={"width": 1280, "height": 900})
+    ctx = browser.new_context(viewport={"width": width, "height": 900})
     external: list[str] = []
 
     def route(r):
@@ -235,7 +396,7 @@ def test_every_page_in_a_browser(site, server, browser):
         page.on("response", lambda r: bad.append(f"{r.status} {r.url}") if r.status >= 400 else None)
         url = urljoin(server, rel)
         resp = page.goto(url, wait_until="load")
-        where = rel
+        where = f"{rel} at {width} px"
         if resp is None or resp.status != 200:
             problems.append(f"{where}: status {resp and resp.status}")
             continue
@@ -247,15 +408,20 @@ def test_every_page_in_a_browser(site, server, browser):
             if not (site / urljoin(rel, redirect.group(1))).is_file():
                 problems.append(f"{where}: redirects to a missing page {redirect.group(1)}")
             continue
-        page.wait_for_timeout(300)
         res = page.evaluate(PAGE_CHECKS)
-        for key in ("unrendered", "errors", "broken", "noalt"):
+        for key in ("unrendered", "errors", "broken", "noalt", "stderr", "warned"):
             if res[key]:
                 problems.append(f"{where}: {key}: {res[key][:5]}")
         if res["raw"]:
             problems.append(f"{where}: {res['raw']} raw TeX delimiters left in the text")
         if res["figures"]:
             problems.append(f"{where}: {res['figures']} figures without alt text")
+        problems += _figure_problems(res, site, where)
+        if res["overflow"] > 1:
+            problems.append(f"{where}: the page scrolls sideways by {res['overflow']} px")
+        if res["pictures"] and width == 390 and res["content"] < 300:
+            problems.append(f"{where}: the content column is only {res['content']} px wide")
+        problems += _navigation_problems(page, width, where)
         heads = res["heads"]
         if heads and heads[0] != 1:
             problems.append(f"{where}: first heading is h{heads[0]}")
@@ -290,7 +456,7 @@ def test_every_page_in_a_browser(site, server, browser):
                 problems.append(f"{where}: animation {i} did not advance when played")
             if int(slider.get_attribute("max") or 0) < 2:
                 problems.append(f"{where}: animation {i} has fewer than 3 frames")
-        page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + ".png")), full_page=True)
+        page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True)
         problems += [f"{where}: console error: {c}" for c in console]
         problems += [f"{where}: failed request: {b}" for b in bad]
         page.close()
@@ -325,7 +491,7 @@ def test_vendored_widget_manager_renders_math_offline(site, browser, tmp_path):
     cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
     scripts = "\n".join(f'<script src="{path.replace("../", "")}"></script>'
                         for path in cfg["sphinx"]["config"]["nb_ipywidgets_js"])
-    (tmp_path / "vendor").symlink_to(site / "vendor", target_is_directory=True)
+    (tmp_path / "vendor").symlink_to(ROOT / "book" / "_vendor" / "vendor", target_is_directory=True)
     (tmp_path / "widgets.html").write_text(WIDGET_PAGE.format(
         scripts=scripts, state=json.dumps(data["manager_state"]), view=json.dumps(data["view_specs"][0])))
     handler = functools.partial(_Quiet, directory=str(tmp_path))

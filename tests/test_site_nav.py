@@ -180,3 +180,43 @@ def test_contents_button_opens_the_page_contents_on_a_phone(open_page):
     anchor = link.get_attribute("href")
     link.click()
     page.wait_for_url(re.compile(re.escape(START) + re.escape(anchor) + "$"))
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_every_click_of_the_theme_button_switches_light_and_dark(open_page, width):
+    from playwright.sync_api import expect
+
+    page = open_page(width)
+    root = page.locator("html")
+    first = root.get_attribute("data-theme")
+    assert first in ("light", "dark")
+    other = "dark" if first == "light" else "light"
+    button = page.locator(".theme-switch-button").filter(visible=True).first
+    for want in (other, first, other):
+        button.click()
+        expect(root).to_have_attribute("data-theme", want)
+
+
+def test_search_excerpts_quote_the_text_not_the_buttons(browser, server):
+    from playwright.sync_api import expect
+
+    ctx = browser.new_context(viewport={"width": 1280, "height": 800})
+    try:
+        page = ctx.new_page()
+        page.set_default_timeout(TIMEOUT_MS)
+        page.goto(server + "search.html?q=pulley", wait_until="load")
+        excerpts = page.locator("#search-results li p.context")
+        expect(excerpts.first).to_be_visible()
+        results = page.locator("#search-results li").evaluate_all(
+            "items => items.map(li => [li.querySelector('a').getAttribute('href'), "
+            "(li.querySelector('p.context') || {}).textContent || ''])")
+        assert results, "no search results for 'pulley'"
+        assert any("pulley" in text.lower() for _, text in results), results
+        for href, text in results:
+            assert len(text) > 80, f"{href}: an excerpt with no text of the page: {text!r}"
+            if "labs" in href:   # the labs page's own text names Binder and Colab
+                continue
+            for chrome in ("Binder", "Colab", ".ipynb", "Print to PDF"):
+                assert chrome not in text, f"{href}: the excerpt quotes the page's buttons: {text[:120]}"
+    finally:
+        ctx.close()

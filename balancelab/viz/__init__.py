@@ -1,9 +1,11 @@
 """Viz: pictures of a design: drawings, energy plots, design spaces, animations, explorers.
 
-What lives here: ``frame`` (the shared style, input checks, configuration grids and
-off-screen rendering), ``springs`` (how a coil, a gas spring or a string over a pulley
-is drawn), ``drawing`` (:func:`draw` and :class:`Drawing`), ``diagram`` (labelled
-diagrams: named points, dimension lines, angle arcs), ``energy``
+What lives here: ``frame`` (the shared palette, input checks, configuration grids and
+off-screen rendering), ``style`` (the house style: resolution, font sizes, titles that fit,
+labels that avoid each other, figures shown as one image per panel), ``springs`` (how a
+coil, a gas spring or a string over a pulley is drawn), ``drawing`` (:func:`draw` and
+:class:`Drawing`), ``diagram`` (labelled diagrams: named points, dimension lines, angle
+arcs), ``energy``
 (:func:`energy_plot` and :class:`EnergyView`), ``spaces`` (:func:`lever_valley`,
 :func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations)
 and ``explorer`` (live ipywidgets explorers, imported on first use). No physics is

@@ -4,7 +4,9 @@ Both functions return a :class:`matplotlib.animation.FuncAnimation` whose
 ``to_jshtml()`` is a self-contained JavaScript player (frames embedded as images, a
 scrubber and play buttons), so the built book plays it with no kernel and no network.
 The defaults keep one embedded animation under 2 MB and at 24 frames per second
-(20 for parameter sweeps).
+(20 for parameter sweeps). The mechanism is drawn above its energy curve (not beside it), in
+the house style of :mod:`balancelab.viz.style`: a frame is narrow enough that its smallest
+text stays readable when a phone shows it at the page's width.
 
 * :func:`animate` moves a design through its configuration range beside its energy
   curve, with a marker riding on the curve.
@@ -22,17 +24,20 @@ import numpy as np
 from ..core.design import Design
 from .drawing import Drawing, extent
 from .energy import EnergyView, energy_limits
+from . import style
+from .style import FONT, fit_title
 from .frame import Blitter, check_design, default_q
 
 __all__ = ["animate", "animate_parameter", "configuration_path"]
 
-#: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB.
-FIGSIZE = (6.4, 2.8)
-DPI = 75
+#: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB and a frame
+#: shown 350 px wide (a phone) keeps its smallest text >= 9 px (see :mod:`balancelab.viz.style`).
+FIGSIZE = (4.4, 4.6)
+DPI = style.DPI
 
 
-def _compact_png(rgb: np.ndarray, colors: int = 64) -> bytes:
-    """Pixels as a PNG of at most ``colors`` colours (line art loses nothing visible)."""
+def _compact_png(rgb: np.ndarray, colors: int = 64, dpi: float | None = None) -> bytes:
+    """Pixels as a PNG of at most ``colors`` colours (line art loses nothing visible), tagged with ``dpi``."""
     from io import BytesIO
 
     from PIL import Image
@@ -40,7 +45,7 @@ def _compact_png(rgb: np.ndarray, colors: int = 64) -> bytes:
     im = Image.fromarray(np.ascontiguousarray(rgb)).quantize(
         colors=colors, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE)
     out = BytesIO()
-    im.save(out, format="png")
+    im.save(out, format="png", **({"dpi": (dpi, dpi)} if dpi else {}))
     return out.getvalue()
 
 
@@ -63,7 +68,7 @@ def _compact_writer_class():
                 return super().grab_frame(**savefig_kwargs)
             import base64
 
-            png = _compact_png(self.source._render_frame(), self.colors)
+            png = _compact_png(self.source._render_frame(), self.colors, self.source._fig.dpi)
             data = base64.encodebytes(png).decode("ascii")
             self._total_bytes += len(data)
             if self._total_bytes >= self._bytes_limit:
@@ -141,30 +146,41 @@ def _animation_class():
     return BalanceAnimation
 
 
+def _svg(path: str, flip: bool = False) -> str:
+    """An inline 16x16 icon drawn in the text colour (no icon font, no network)."""
+    turn = ' transform="matrix(-1 0 0 1 16 0)"' if flip else ""
+    return (f'<svg aria-hidden="true" class="bl-icon" viewBox="0 0 16 16" width="1em" height="1em">'
+            f'<path fill="currentColor"{turn} d="{path}"/></svg>')
+
+
+_PLAY = "M4 2.5v11l9-5.5z"
+_STEP = "M3 2.5v11l8-5.5zM12 2.5h2v11h-2z"
+_FAST = "M1 2.5v11l7-5.5zM8 2.5v11l7-5.5z"
+#: matplotlib's Font Awesome 4 player icons as inline SVG paths.
 _ICONS = {
-    "fa fa-play fa-flip-horizontal": "&#9664;",
-    "fa fa-minus": "&minus;",
-    "fa fa-fast-backward": "&#9198;",
-    "fa fa-step-backward": "|&#9664;",
-    "fa fa-pause": "&#10074;&#10074;",
-    "fa fa-play": "&#9654;",
-    "fa fa-step-forward": "&#9654;|",
-    "fa fa-fast-forward": "&#9197;",
-    "fa fa-plus": "+",
+    "fa fa-play fa-flip-horizontal": _svg(_PLAY, flip=True),
+    "fa fa-minus": _svg("M2 7h12v2H2z"),
+    "fa fa-fast-backward": _svg(_FAST + "M13 2.5h2v11h-2z", flip=True),
+    "fa fa-step-backward": _svg(_STEP, flip=True),
+    "fa fa-pause": _svg("M3 2.5h3.5v11H3zM9.5 2.5H13v11H9.5z"),
+    "fa fa-play": _svg(_PLAY),
+    "fa fa-step-forward": _svg(_STEP),
+    "fa fa-fast-forward": _svg(_FAST + "M13 2.5h2v11h-2z"),
+    "fa fa-plus": _svg("M7 2h2v5h5v2H9v5H7V9H2V7h5z"),
 }
 
 
 def _offline(page: str) -> str:
     """Make matplotlib's player self-contained: no icon font fetched from a CDN.
 
-    The buttons' Font Awesome icons become plain Unicode symbols, so the player looks
-    and works the same on a page opened with no network.
+    The buttons' Font Awesome icons become inline SVG drawings, so the player looks and
+    works the same on a page opened with no network and with any system fonts.
     """
     import re
 
     page = re.sub(r'<link rel="stylesheet"\s*href="https?://[^"]*font-awesome[^"]*">\s*', "", page)
-    for cls, glyph in _ICONS.items():
-        page = page.replace(f'<i class="{cls}"></i>', f'<span aria-hidden="true">{glyph}</span>')
+    for cls, icon in _ICONS.items():
+        page = page.replace(f'<i class="{cls}"></i>', icon)
     return page
 
 
@@ -181,7 +197,7 @@ def _figure(figsize, dpi, panels: int):
     fig = Figure(figsize=figsize, dpi=dpi, layout="constrained")
     FigureCanvasAgg(fig)
     if panels == 2:
-        axes = fig.subplots(1, 2, width_ratios=(1, 1.15))
+        axes = fig.subplots(2, 1, height_ratios=(1.2, 1))
     else:
         axes = [fig.subplots(1, 1)]
     return fig, list(axes)
@@ -298,11 +314,11 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     show_energy = design.dof <= 2
     fig, axes = _figure(figsize, dpi, 2 if show_energy else 1)
     drawing = Drawing(design, path[0], axes[0], labels=labels)
-    axes[0].set_title(design.name, fontsize=9)
+    fit_title(axes[0], design.name)
     energy = None
     if show_energy:
         energy = EnergyView(design, axes[1], q=path[0], legend=True, title=False)
-        energy.ax.set_title(_verdict(energy), fontsize=9)
+        energy.ax.set_title(_verdict(energy), fontsize=FONT["title"])
 
     def frame(i):
         drawing.update(path[i])
@@ -405,15 +421,18 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     ax.set_aspect("equal", adjustable="box")
-    title = ax.set_title("", fontsize=9, y=1.0)
-    note = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center", fontsize=8,
+    title = ax.set_title("", fontsize=FONT["title"], y=1.0)
+    note = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center", fontsize=FONT["note"],
                    color="#D55E00", wrap=True,
                    bbox=dict(boxstyle="round", facecolor="white", edgecolor="#D55E00"))
     energy = _sweep_energy(designs, valid, axes[1], qs[valid[0]]) if show_energy else None
-    frame = _sweep_frames(designs, qs, [_wrap(m) for m in messages],
-                          [f"{name} = {v:.4g}{unit_s}" for v in values], drawing, energy, title, note)
-    frame(0)
+    heads = [f"{name} = {v:.4g}{unit_s}" for v in values]
+    frame = _sweep_frames(designs, qs, [_wrap(m) for m in messages], heads, drawing, energy, title, note)
+    # lay the figure out with the title that needs the most lines, so that none overlaps the drawing
+    fit_title(ax, max((f"{d.name}, {h}" if d is not None else h + ": no valid design"
+                       for d, h in zip(designs, heads)), key=len), y=1.0)
     _freeze_layout(fig)
+    frame(0)
     anim = _animation_class()(fig, frame, frames=len(values), interval=1000.0 / fps, blit=False,
                               repeat=True, cache_frame_data=False)
     # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
@@ -464,7 +483,7 @@ def _sweep_energy(designs: list, valid: list, ax, q) -> EnergyView:
     """The energy view of the first design, its axis fixed to hold every design's curves."""
     first = designs[valid[0]]
     energy = EnergyView(first, ax, q=q, title=False)
-    energy.ax.set_title(" ", fontsize=9, y=1.0)
+    energy.ax.set_title(" ", fontsize=FONT["title"], y=1.0)
     if first.dof == 1:
         lows, highs = [], []
         for i in valid:
@@ -488,21 +507,21 @@ def _sweep_frames(designs, qs, notes, heads, drawing, energy, title, note) -> Ca
             drawing.set_visible(False)
             note.set_text(notes[i])
             note.set_visible(True)
-            title.set_text(heads[i] + ": no valid design")
+            fit_title(title.axes, heads[i] + ": no valid design", y=1.0)
             if energy is not None:
                 energy.set_visible(False)
-                energy.ax.set_title("", fontsize=9, y=1.0)
+                energy.ax.set_title("", fontsize=FONT["title"], y=1.0)
             return []
         note.set_visible(False)
         drawing.update(qs[i], d, rescale=False)
         drawing.set_visible(True)
-        title.set_text(f"{d.name}, {heads[i]}")
+        fit_title(title.axes, f"{d.name}, {heads[i]}", y=1.0)
         if energy is not None:
             if d is not state["design"]:
                 energy.update(d)
             energy.set_q(qs[i])
             energy.set_visible(True)
-            energy.ax.set_title(_verdict(energy), fontsize=9, y=1.0)
+            energy.ax.set_title(_verdict(energy), fontsize=FONT["title"], y=1.0)
         state["design"] = d
         return []
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.kinematics import body_to_world
+from .style import FONT, arrange_labels
 from .frame import STYLE, as_config, check_design, new_axes, range_grid, tex_label
 from .springs import pulley_coil_length, pulley_drawn_radius, spring_path, spring_style
 
@@ -377,8 +378,8 @@ class Drawing:
                                          zorder=7.5)
             for name in design.labels:
                 self.labels[name] = ax.annotate(tex_label(name), (0, 0), xytext=(5, 5),
-                                                textcoords="offset points", fontsize=9, color=STYLE["label"],
-                                                alpha=a, zorder=8)
+                                                textcoords="offset points", fontsize=FONT["annotation"],
+                                                color=STYLE["label"], alpha=a, zorder=8)
 
     def padded(self, box) -> np.ndarray:
         """Axis limits ``[x0, x1, y0, y1]`` (m) holding ``box`` with room for the load symbols.
@@ -440,6 +441,16 @@ class Drawing:
             t.xy = tuple(W[g.label_idx[name]])
         if self.label_dots is not None:
             self.label_dots.set_offsets(W[[g.label_idx[name] for name in self.labels]])
+        if self.labels:
+            self._arrange_labels(W)
+
+    def _arrange_labels(self, W: np.ndarray) -> None:
+        """Labels of coincident points merged, each turned away from its neighbours (see style)."""
+        g = self.geom
+        points = {n: W[g.label_idx[n]] for n in self.labels}
+        self._label_dirs = arrange_labels(self.labels, points, {n: tex_label(n) for n in self.labels},
+                                          W[g.joint_idx] if self.design.joints else (),
+                                          getattr(self, "_label_dirs", None))
 
     def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> "Drawing":
         """Move the artists to configuration ``q`` (rad), optionally of another design.
@@ -546,6 +557,6 @@ def draw(design: Design, q=None, ax=None, labels: bool = True, *, color: str | N
     drawing = Drawing(design, q, ax, labels=labels, color=color, limits=limits, alpha=alpha)
     ax = drawing.ax
     if title:
-        ax.set_title(design.name if title is True else str(title), fontsize=10)
+        ax.set_title(design.name if title is True else str(title), fontsize=FONT["title"])
     ax.drawing = drawing
     return ax

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.validation import finite_real
+from .style import FONT
 from .frame import PALETTE, STYLE, check_design, count, new_axes, range_grid, tex_label
 
 __all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary"]
@@ -136,7 +137,7 @@ class EnergyView:
             self._init_curves(design, legend)
         else:
             self._init_map(design, residual_ax)
-        self.note = self.ax.text(0.02, 0.03, "", transform=self.ax.transAxes, fontsize=8, va="bottom",
+        self.note = self.ax.text(0.02, 0.03, "", transform=self.ax.transAxes, fontsize=FONT["note"], va="bottom",
                                  ha="left", color="black",
                                  bbox=dict(boxstyle="round,pad=0.25", facecolor="white", alpha=0.8,
                                            edgecolor="none"))
@@ -144,10 +145,13 @@ class EnergyView:
 
     def _init_curves(self, design: Design, legend: bool) -> None:
         ax = self.ax
-        for key, label, colour, lw in (("load", "loads (gravity, forces)", STYLE["load"], 1.5),
-                                       ("spring", "springs", STYLE["zfl"], 1.5),
-                                       ("total", "total", STYLE["total"], 2.5)):
-            self.lines[key], = ax.plot([], [], color=colour, linewidth=lw, label=label)
+        # the total dashed and beneath: a load or spring curve that coincides with it stays visible
+        for key, label, colour, lw, dash, z in (
+                ("load", "loads (gravity, forces)", STYLE["load"], 1.8, "-", 3),
+                ("spring", "springs", STYLE["zfl"], 1.8, "-", 3),
+                ("total", "total", STYLE["total"], 2.4, (0, (5, 2.5)), 2)):
+            self.lines[key], = ax.plot([], [], color=colour, linewidth=lw, linestyle=dash, label=label,
+                                       zorder=z)
         self.worst, = ax.plot([], [], linestyle="none", marker="x", color=PALETTE["vermillion"],
                               markersize=9, markeredgewidth=2)
         self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
@@ -155,7 +159,7 @@ class EnergyView:
         ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
         ax.set_ylabel("potential energy (J)")
         if legend:
-            ax.legend(loc="best", fontsize=8, framealpha=0.85)
+            ax.legend(loc="best", fontsize=FONT["legend"], framealpha=0.85)
 
     def _init_map(self, design: Design, residual_ax) -> None:
         ax = self.ax
@@ -177,7 +181,7 @@ class EnergyView:
                 self.residual_image, ax=residual_ax, label="|dV/dq| / scale (1/rad)")
             residual_ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
             residual_ax.set_ylabel(f"{tex_label(design.q_names[1])} (deg)")
-            residual_ax.set_title("residual generalized force", fontsize=10)
+            residual_ax.set_title("residual generalized force", fontsize=FONT["title"])
 
     def update(self, design: Design | None = None, *, report=None, q=None) -> "EnergyView":
         """Recompute the curves (or map) for ``design`` and move the marker to ``q``.
@@ -272,7 +276,7 @@ class EnergyView:
                 self.worst.set_data([np.degrees(wq[0])], [np.degrees(wq[1])])
         if self.show_title:
             self.ax.set_title(f"{d.name}: " + ("balanced" if rep is not None and rep.balanced else
-                                               "not balanced"), fontsize=10)
+                                               "not balanced"), fontsize=FONT["title"])
 
     @property
     def artists(self) -> list:

@@ -29,6 +29,7 @@ import numpy as np
 from ..core.design import Design
 from .drawing import Drawing, extent
 from .energy import EnergyView, report_summary
+from .style import FONT
 from .frame import Blitter, check_design, default_q
 
 __all__ = ["Explorer", "explore", "scaled_design_factory"]
@@ -203,11 +204,11 @@ class Explorer:
         else:
             ax_m, ax_e = fig.subplots(1, 1), None
         self.drawing = Drawing(design, q0, ax_m, labels=labels)
-        ax_m.set_title(design.name, fontsize=9, y=1.0)
+        ax_m.set_title(design.name, fontsize=FONT["title"], y=1.0)
         self.energy = None
         if show_energy:
             self.energy = EnergyView(design, ax_e, q=q0, report=self.report, title=False)
-            ax_e.set_title(self._verdict(), fontsize=9, y=1.0)
+            ax_e.set_title(self._verdict(), fontsize=FONT["title"], y=1.0)
             self._fit_energy_limits()
         fig.canvas.draw()
         fig.set_layout_engine("none")
@@ -333,7 +334,7 @@ class Explorer:
                 full |= self._fit_energy_limits(previous=ylim)
                 if clim is not None and self.energy.image.get_clim() != clim:
                     full = True
-                self.energy.ax.set_title(self._verdict(), fontsize=9, y=1.0)
+                self.energy.ax.set_title(self._verdict(), fontsize=FONT["title"], y=1.0)
             self.valid_values = dict(self.values)
         else:
             self.drawing.update(q)

@@ -19,6 +19,7 @@ import numpy as np
 from ..core.design import Design, UnreachableConfiguration
 from ..core.validation import finite_real
 from .drawing import Drawing, draw
+from .style import FONT
 from .frame import PALETTE, as_config, check_design, count, new_axes, range_grid, tex_label
 
 __all__ = ["cognates_plot", "family_plot", "lever_valley"]
@@ -111,7 +112,7 @@ def lever_valley(weight: float = 10.0, length: float = 0.5, a_range=(0.05, 1.0),
         ax = _valley_contour(ax, A, B, PE, v, pe_v, label)
     ax.set_xlabel("$a_x$ (m)")
     ax.set_ylabel("$b_y$ (m)")
-    ax.set_title(f"LaCoste lever, W = {W:g} N, l = {length:g} m", fontsize=10)
+    ax.set_title(f"LaCoste lever, W = {W:g} N, l = {length:g} m", fontsize=FONT["title"])
     ax.valley = (A, B, PE)
     return ax
 
@@ -126,7 +127,7 @@ def _valley_surface(ax, A, B, PE, v, pe_v, label: str):
     ax.plot_surface(A, B, top, cmap="cividis", linewidth=0, antialiased=True, alpha=0.9)
     ax.plot(v, v, pe_v, color=PALETTE["vermillion"], linewidth=2.5, label=label.replace("$", ""))
     ax.set_zlabel("PE (J)")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=FONT["legend"])
     return ax
 
 
@@ -143,7 +144,7 @@ def _valley_contour(ax, A, B, PE, v, pe_v, label: str):
     cb.minorticks_off()
     ax.plot(v[[0, -1]], v[[0, -1]], "--", color=PALETTE["vermillion"], linewidth=2, label=label)
     ax.set_aspect("equal")
-    ax.legend(loc="upper left", fontsize=8)
+    ax.legend(loc="upper left", fontsize=FONT["legend"])
     return ax
 
 
@@ -234,7 +235,7 @@ def family_plot(factory: Callable, name: str, values: Sequence[float], *, q=None
     _plot_family(ax_l, ax_k, vs, loci, consts, name, ylab)
     skipped = len(rows) - len(good)
     ax_k.set_title(f"along the family ({len(good)} designs" +
-                   (f", {skipped} invalid values skipped)" if skipped else ")"), fontsize=10)
+                   (f", {skipped} invalid values skipped)" if skipped else ")"), fontsize=FONT["title"])
     ax_l.family = {"values": vs, "loci": loci, "constants": consts}
     return ax_l, ax_k
 
@@ -284,13 +285,13 @@ def _plot_family(ax_l, ax_k, vs, loci: dict, consts: dict, name: str, ylab: str)
         ax_l.plot(pts[:, 0], pts[:, 1], ":", color=c, linewidth=1.8, label=f"locus of {lab}")
         ax_l.plot(pts[[0, -1], 0], pts[[0, -1], 1], linestyle="none", marker="o", markersize=4, color=c)
     if loci:
-        ax_l.legend(fontsize=8, loc="best")
+        ax_l.legend(fontsize=FONT["legend"], loc="best")
     for i, (lab, ks) in enumerate(consts.items()):
         ax_k.plot(vs, ks, color=_COLOURS[i % len(_COLOURS)], linewidth=2, label=tex_label(lab))
     ax_k.set_xlabel(tex_label(name))
     ax_k.set_ylabel(ylab)
     if consts:
-        ax_k.legend(fontsize=8)
+        ax_k.legend(fontsize=FONT["legend"])
 
 
 # --------------------------------------------------------------------- cognates
@@ -351,9 +352,10 @@ def cognates_plot(designs: Sequence[Design], point: str = "P", *, q=None, n: int
         if show:
             Drawing(d, None if q is None else q[i], ax, labels=(i == 0), color=c, limits=False, linewidth=2.5)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.legend(fontsize=8, loc="best")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+    # below the x label, where it can cover neither a pivot nor a path
+    ax.legend(fontsize=FONT["legend"], loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
     ax.autoscale_view()
     ax.curves = curves
     return ax

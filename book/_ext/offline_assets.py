@@ -7,12 +7,16 @@
   (declaring a ``const`` twice is a console error on every page);
 * drops the Font Awesome 4 CDN link that matplotlib's ``to_jshtml()`` puts in every
   animation (the theme's own Font Awesome draws the player's icons);
+* after the build, ships only what some page uses (:func:`prune_unused`): the ipywidgets HTML
+  manager, require.js and their shim only when a page embeds widgets, and never the themes'
+  JavaScript source maps or their translation catalogues (read by Sphinx at build time);
 * after the build, warns (an error under ``-W``) about any page that still loads a script,
   style sheet or font from another host.
 """
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 from sphinx.application import Sphinx
@@ -94,8 +98,62 @@ def _check_remote(app: Sphinx, exception) -> None:
                            page.relative_to(outdir), tag[:160], type="offline", subtype="remote")
 
 
+#: Vendored files a page asks for only when it embeds widgets (myst-nb adds ``nb_ipywidgets_js``
+#: to such pages only).
+WIDGET_ASSETS = ("vendor/html-manager", "vendor/requirejs", "vendor/widgets-mathjax-shim.js")
+#: Files of the built site that no page requests.
+NEVER_REQUESTED = ("_static/**/*.map", "_static/locales")
+
+
+def prune_unused(outdir) -> list[str]:
+    """Delete from a built site the assets no page requests; return their paths (relative).
+
+    Parameters
+    ----------
+    outdir : path
+        The HTML output folder.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> root = Path(tempfile.mkdtemp())
+    >>> (root / "vendor" / "requirejs").mkdir(parents=True)
+    >>> _ = (root / "index.html").write_text("<html>no widgets</html>")
+    >>> prune_unused(root)
+    ['vendor/requirejs']
+    """
+    outdir = Path(outdir)
+    pages = [p for p in outdir.rglob("*.html") if p.relative_to(outdir).parts[0] != "vendor"]
+    uses_widgets = any("html-manager/embed-amd.js" in p.read_text(encoding="utf-8", errors="replace")
+                       for p in pages)
+    doomed = [] if uses_widgets else [outdir / w for w in WIDGET_ASSETS]
+    for pattern in NEVER_REQUESTED:
+        doomed += sorted(outdir.glob(pattern))
+    removed = []
+    for path in doomed:
+        if path.is_dir():
+            shutil.rmtree(path)
+        elif path.is_file():
+            path.unlink()
+        else:
+            continue
+        removed.append(path.relative_to(outdir).as_posix())
+    return removed
+
+
+def _prune(app: Sphinx, exception) -> None:
+    if exception is None and app.builder.format == "html":
+        removed = prune_unused(app.outdir)
+        logger.info("offline_assets: not shipped (no page requests them): %s", ", ".join(removed) or "nothing")
+
+
 def setup(app: Sphinx) -> dict:
     app.connect("builder-inited", _check_vendor)
+    app.connect("build-finished", _prune)
     app.connect("html-page-context", _dedupe_scripts, priority=900)
     app.connect("html-page-context", _strip_cdn_links)
     app.connect("build-finished", _check_remote)
