@@ -224,3 +224,28 @@ def test_coincident_points_share_one_label():
     assert set(dirs) == {"A", "C"}
     # the obstacle up and to the right of A pushes A's label elsewhere
     assert dirs["A"] != (1, 1)
+
+
+# ---------------------------------------------------------------- every plot says which angle
+def _catalog_designs():
+    return [(name, factory()) for name, factory in bl.catalog().items()]
+
+
+@pytest.mark.parametrize("name, design", _catalog_designs(), ids=lambda x: x if isinstance(x, str) else "")
+def test_every_coordinate_says_what_angle_it_is(name, design):
+    """Each axis label names its angle, and the words are true of the poses: an angle "of link b
+    from the x-axis" is body b's angle, one "relative to link p" is the difference of the two."""
+    from balancelab.viz.frame import angle_label
+
+    q = design.sample(40, seed=3)
+    poses = design.poses(q)
+    for i, words in enumerate(design.kinematics.describe()):
+        assert words, f"{name}: coordinate {design.q_names[i]} has no description"
+        assert words in angle_label(design, i)
+        m = re.fullmatch(r"angle of link (\d+) (?:from the x-axis|relative to link (\d+))", words)
+        if m:
+            b = int(m.group(1))
+            angle = poses[..., b, 2] - (poses[..., int(m.group(2)), 2] if m.group(2) else 0.0)
+            assert np.allclose(np.angle(np.exp(1j * (angle - q[..., i]))), 0.0, atol=1e-9), (name, words)
+        elif words == "crank angle from the x-axis":
+            assert np.allclose(np.angle(np.exp(1j * (poses[..., 1, 2] - q[..., i]))), 0.0, atol=1e-9), name

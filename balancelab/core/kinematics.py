@@ -13,6 +13,9 @@ A subclass sets three attributes and implements one method:
     Names of the configuration coordinates (also the sympy symbol names).
 ``q_range``
     Array of shape ``(dof, 2)``: the bounds of each coordinate (rad).
+
+Optionally ``descriptions``: what each coordinate measures, in words ("crank angle from
+the x-axis"), which every plot prints next to the coordinate's symbol.
 ``poses(q)``
     Returns ``(poses, ok)``: poses ``(x, y, angle)`` of shape ``(..., nbodies, 3)`` and
     the boolean mask of the configurations the linkage can reach.
@@ -142,6 +145,8 @@ class Kinematics(ABC):
     #: True when :meth:`symbols` are independent coordinates (an open chain, a relaxed loop),
     #: False when they are tied by loop-closure equations; None: as many symbols as ``dof``
     independent_symbols: bool | None = None
+    #: what each coordinate measures, in words (for axis labels); empty when unknown
+    descriptions: tuple[str, ...] = ()
 
     @property
     def dof(self) -> int:
@@ -170,6 +175,18 @@ class Kinematics(ABC):
         gaps = joint_gaps(poses, joints)
         worst = gaps.max(axis=-1) if gaps.shape[-1] else np.zeros(gaps.shape[:-1])
         return np.where(ok, worst, np.inf)
+
+    def describe(self) -> tuple[str, ...]:
+        """What each coordinate measures, in words (``""`` where the kinematics does not say).
+
+        Examples
+        --------
+        >>> from balancelab.mechanisms import serial_2r_kinematics
+        >>> serial_2r_kinematics(1.0).describe()
+        ('angle of link 1 from the x-axis', 'angle of link 2 from the x-axis')
+        """
+        d = tuple(str(x) for x in self.descriptions)
+        return d if len(d) == self.dof else ("",) * self.dof
 
     def symbols(self):
         """The sympy symbols of the configuration coordinates."""

@@ -41,10 +41,13 @@ class ExplicitKinematics(Kinematics):
         ``lib.sin``). The ground's pose is ``(0, 0, 0)``.
     valid_fn : callable, optional
         ``valid_fn(q) -> bool array``; by default every ``q`` inside ``q_range`` is valid.
+    descriptions : sequence of str, optional
+        What each coordinate measures, in words (shown on plots).
     """
 
     def __init__(self, nbodies: int, names: Sequence[str], q_range, pose_fn: Callable,
-                 valid_fn: Callable | None = None, open_range: bool = False):
+                 valid_fn: Callable | None = None, open_range: bool = False, descriptions: Sequence[str] = ()):
+        self.descriptions = tuple(descriptions)
         self.nbodies = int(nbodies)
         self.names = tuple(names)
         self.q_range = np.asarray(q_range, dtype=float).reshape(len(self.names), 2)
@@ -142,13 +145,41 @@ class TreeKinematics(ExplicitKinematics):
                 pos[child] = (ox + ax - bx, oy + ay - by)
             return [(pos[b][0], pos[b][1], angles[b]) for b in range(nbodies)]
 
-        super().__init__(nbodies, names, q_range, pose_fn, open_range=open_range)
+        super().__init__(nbodies, names, q_range, pose_fn, open_range=open_range,
+                         descriptions=_tree_descriptions(A, c))
 
     def poses_with_trig(self, q):
         q = np.asarray(q, dtype=float)
         trig: dict = {}
         poses, ok = self._assemble(q, self._pose_fn(tuple(q[..., i] for i in range(self.dof)), np, trig))
         return poses, ok, trig
+
+
+_DIRECTIONS = {0.0: "the x-axis", 90.0: "the +y axis", -90.0: "the -y axis (straight down)",
+               180.0: "the -x axis", -180.0: "the -x axis"}
+
+
+def _tree_descriptions(A: np.ndarray, c: np.ndarray) -> tuple[str, ...]:
+    """Words for each coordinate: the absolute or relative angle of the first link it turns."""
+    out = []
+    for i in range(A.shape[1]):
+        unit = np.zeros(A.shape[1])
+        unit[i] = 1.0
+        words = ""
+        for b in range(1, A.shape[0]):
+            if np.array_equal(A[b], unit):            # body b's angle is q_i plus a constant
+                ref = round(float(np.degrees(-c[b])), 6)
+                words = (f"angle of link {b} from " + _DIRECTIONS[ref] if ref in _DIRECTIONS
+                         else f"angle of link {b} from the direction at {ref:g} deg")
+                break
+            for p in range(1, A.shape[0]):           # body b turns by q_i relative to body p
+                if p != b and np.array_equal(A[b] - A[p], unit) and c[b] == c[p]:
+                    words = f"angle of link {b} relative to link {p}"
+                    break
+            if words:
+                break
+        out.append(words)
+    return tuple(out)
 
 
 def _spanning_tree(nbodies: int, joints: Sequence[Joint]):

@@ -63,6 +63,7 @@ class PeaucellierKinematics(Kinematics):
                              f"{self.l - self.s:.4g} m from O, so crank > (arm - side)/2")
         self.nbodies = 8
         self.names = ("phi",)
+        self.descriptions = ("crank angle from the x-axis",)
         self.symbol_bodies = (1, 2, 3, 6, 7)
         self.phi_max = 2 * math.acos((self.l - self.s) / (2 * self.d))
         self.phi_min = 2 * math.acos(min(1.0, (self.l + self.s) / (2 * self.d)))

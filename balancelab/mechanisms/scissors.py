@@ -46,7 +46,8 @@ def scissors_kinematics(length: float) -> ExplicitKinematics:
                 (zero, a * s, th), (a * c, a * s, back), (a * c, 2 * a * s, zero),
                 (zero, 2 * a * s, zero)]
 
-    return ExplicitKinematics(8, ("theta",), ((0.0, math.pi / 2),), pose_fn, open_range=True)
+    return ExplicitKinematics(8, ("theta",), ((0.0, math.pi / 2),), pose_fn, open_range=True,
+                              descriptions=("angle of the arms from the floor",))
 
 
 def scissors_joints(length: float) -> list:

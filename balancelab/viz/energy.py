@@ -16,7 +16,7 @@ import numpy as np
 from ..core.design import Design
 from ..core.validation import finite_real
 from .style import FONT
-from .frame import PALETTE, STYLE, check_design, count, new_axes, range_grid, tex_label
+from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
 
 __all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary"]
 
@@ -156,7 +156,7 @@ class EnergyView:
                               markersize=9, markeredgewidth=2)
         self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
                                markerfacecolor=PALETTE["yellow"], markersize=8, zorder=5)
-        ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
+        ax.set_xlabel(angle_label(design, 0))
         ax.set_ylabel("potential energy (J)")
         if legend:
             ax.legend(loc="best", fontsize=FONT["legend"], framealpha=0.85)
@@ -172,15 +172,15 @@ class EnergyView:
                                markerfacecolor=PALETTE["yellow"], markersize=8)
         self.worst, = ax.plot([], [], linestyle="none", marker="x", color=PALETTE["vermillion"],
                               markersize=9, markeredgewidth=2)
-        ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
-        ax.set_ylabel(f"{tex_label(design.q_names[1])} (deg)")
+        ax.set_xlabel(angle_label(design, 0))
+        ax.set_ylabel(angle_label(design, 1))
         if residual_ax is not None:
             self.residual_image = residual_ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto",
                                                      cmap="magma", extent=extent, interpolation="nearest")
             self.residual_colorbar = residual_ax.figure.colorbar(
                 self.residual_image, ax=residual_ax, label="|dV/dq| / scale (1/rad)")
-            residual_ax.set_xlabel(f"{tex_label(design.q_names[0])} (deg)")
-            residual_ax.set_ylabel(f"{tex_label(design.q_names[1])} (deg)")
+            residual_ax.set_xlabel(angle_label(design, 0))
+            residual_ax.set_ylabel(angle_label(design, 1))
             residual_ax.set_title("residual generalized force", fontsize=FONT["title"])
 
     def update(self, design: Design | None = None, *, report=None, q=None) -> "EnergyView":

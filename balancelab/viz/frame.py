@@ -21,8 +21,8 @@ import numpy as np
 
 from ..core.design import Design
 
-__all__ = ["PALETTE", "STYLE", "Blitter", "as_config", "check_design", "count", "default_q", "new_axes",
-           "range_grid", "tex_label"]
+__all__ = ["PALETTE", "STYLE", "Blitter", "angle_label", "as_config", "check_design", "count", "default_q",
+           "new_axes", "range_grid", "tex_label"]
 
 #: Okabe-Ito colour-blind-safe palette (Okabe & Ito 2008), by name.
 PALETTE = {
@@ -254,6 +254,29 @@ def tex_label(name: str) -> str:
     if sub:
         return f"${base}_{{{sub}}}$"
     return f"${base}$" if (base.startswith("\\") or base.islower()) else name
+
+
+def angle_label(design: Design, i: int = 0) -> str:
+    """Axis label of coordinate ``i``: its symbol, what it measures (when known) and the unit.
+
+    Parameters
+    ----------
+    design : Design
+    i : int
+        Index of the coordinate.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> print(angle_label(bl.catalog()["singh_fourbar"]()))
+    $\\theta$, crank angle from the x-axis (deg)
+    """
+    words = design.kinematics.describe()[i]
+    return f"{tex_label(design.q_names[i])}, {words} (deg)" if words else f"{tex_label(design.q_names[i])} (deg)"
 
 
 class Blitter:

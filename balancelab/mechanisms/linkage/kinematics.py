@@ -93,6 +93,7 @@ class LinkageKinematics(Kinematics):
         self.driving = self._driving(driving)
         self.dependent = [b for b in range(1, self.nbodies) if b not in self.driving]
         self.names = tuple(f"theta_{b}" for b in self.driving)
+        self.descriptions = tuple(f"angle of {self.body_names[b]} from the x-axis" for b in self.driving)
         self.independent_symbols = True if not self.topology.loops else None
         self.full_turn = False
         self._table = self._grid = None

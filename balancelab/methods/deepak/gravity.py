@@ -218,7 +218,8 @@ def slider_crank_technique2(crank: float, coupler: float, offset: float, coupler
         z = np.zeros_like(th)
         return [(z, z, z), (z, z, th), (Dx, Dy, phi), (Cx, z + e, z)]
 
-    kin = ExplicitKinematics(4, ("theta",), ((-math.pi, math.pi),), pose_fn)
+    kin = ExplicitKinematics(4, ("theta",), ((-math.pi, math.pi),), pose_fn,
+                              descriptions=("crank angle from the x-axis",))
     joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (r2, 0.0), 2, (0.0, 0.0)),
               Joint(2, (r3, 0.0), 3, (0.0, 0.0))]
     T = (-E[0], -E[1])

@@ -250,7 +250,8 @@ def cognate_driver(fourbar: FourBar, index: int, cognate: FourBar | None = None)
         return [(0 * one, 0 * one, 0 * one), (Ac.real * one, Ac.imag * one, a2), (D.real, D.imag, a3),
                 (Bc.real * one, Bc.imag * one, a4)]
 
-    return ExplicitKinematics(4, ("theta",), kin0.q_range, pose_fn, lambda q: kin0.poses(q)[1])
+    return ExplicitKinematics(4, ("theta",), kin0.q_range, pose_fn, lambda q: kin0.poses(q)[1],
+                              descriptions=("crank angle of the given four-bar from the x-axis",))
 
 
 def cognate_designs(fourbar: FourBar, K: Point, k_l: float) -> tuple[Design, Design, Design]:

@@ -191,7 +191,7 @@ def technique1(fourbar: FourBar, K: Point, k_l: float, length_1: float, length_2
         P4, ok = kin4.poses(q)
         return ok & _dyad_joint(K, _coupler_point(fourbar, P4), l1, l2, branch)[1]
 
-    kin = ExplicitKinematics(6, ("theta",), kin4.q_range, pose_fn, valid_fn)
+    kin = ExplicitKinematics(6, ("theta",), kin4.q_range, pose_fn, valid_fn, descriptions=kin4.describe())
     joints = fourbar.joints() + [Joint(0, K, 4, (0.0, 0.0)), Joint(4, (l2, 0.0), 5, (0.0, 0.0)),
                                  Joint(5, (l1, 0.0), 2, fourbar.coupler_point)]
     springs = [load_spring(fourbar, K, k_l), Spring(k_l, 0.0, (0, K), (5, (-l1, 0.0)), name="k_b")]

@@ -387,7 +387,8 @@ def technique3(fourbar: FourBar, K: Point, k_l: float, plagiograph_base: str = "
         out.append((S.real, S.imag, a5))
         return out
 
-    kin = ExplicitKinematics(6, kin4.names, kin4.q_range, pose_fn, lambda q: kin4.poses(q)[1])
+    kin = ExplicitKinematics(6, kin4.names, kin4.q_range, pose_fn, lambda q: kin4.poses(q)[1],
+                              descriptions=kin4.describe())
     R_on_coupler = (r3, 0.0) if UA else (0.0, 0.0)
     joints = fourbar.joints() + [Joint(0, p.U, 4, (0.0, 0.0)), Joint(4, (r3, 0.0), 5, (0.0, 0.0)),
                                  Joint(5, p.R_local, 2, R_on_coupler)]
