@@ -167,3 +167,96 @@ def test_finite_free_length_gives_a_clear_error(name):
     d = bl.catalog()[name]()
     with pytest.raises(NotImplementedError, match="balance_report"):
         d.balance_conditions()
+
+
+# ------------------------------------------------------------- Singh's 2R and four-bar, p_x2 < 0
+def test_min_preload_body2_conditions_fix_the_sign_of_p_x2():
+    """Derived here with sympy: springs on body 2 at (a_i, 0), anchored where they have zero length
+    at theta_2 = +-90 deg. Balance of the theta_2 terms needs sum k a = 0 and sum k a^2 = sigma W2 p_x2:
+    with the paper's sigma = +1 no pair of positive springs exists for p_x2 < 0; sigma = sign(p_x2) works."""
+    import sympy as sp
+
+    t1, t2, l, W2, p = sp.symbols("theta_1 theta_2 l W_2 p_x2", real=True)
+    k = sp.symbols("k2 k3", positive=True)
+    a = sp.symbols("a2 a3", real=True)
+    c, s, sigma = sp.symbols("c s sigma", real=True)
+    J = sp.Matrix([l * sp.cos(t1), l * sp.sin(t1)])
+    R2 = sp.Matrix([[sp.cos(t2), -sp.sin(t2)], [sp.sin(t2), sp.cos(t2)]])
+    energy = W2 * (l * sp.sin(t1) + p * sp.sin(t2))
+    for ki, ai in zip(k, a):
+        anchor = sp.Matrix([l * c, l * s + sigma * ai])   # = J* + R(sigma 90 deg) (a_i, 0)
+        gap = J + R2 * sp.Matrix([ai, 0]) - anchor
+        energy += ki / 2 * gap.dot(gap)
+    energy = sp.expand(sp.expand_trig(energy))
+    coeff_cos12 = energy.coeff(sp.cos(t1)).coeff(sp.cos(t2))   # cos(t1 - t2) = c1 c2 + s1 s2
+    coeff_sin2 = energy.coeff(sp.sin(t2)).subs({sp.sin(t1): 0, sp.cos(t1): 0})
+    assert sp.simplify(coeff_cos12 - l * (k[0] * a[0] + k[1] * a[1])) == 0
+    tied = coeff_sin2.subs(k[1], -k[0] * a[0] / a[1])            # sum k a = 0
+    # W2 p_x2 - sigma k2 a2 (a2 - a3) = 0, and k2 a2^2 + k3 a3^2 = k2 a2 (a2 - a3)
+    assert sp.simplify(tied - (W2 * p - sigma * k[0] * a[0] * (a[0] - a[1]))) == 0
+    # k2 a2 (a2 - a3) = k2 a2^2 + k3 a3^2 > 0 for positive springs: sigma must be sign(p_x2)
+    assert sp.simplify(k[0] * a[0] * (a[0] - a[1]) - (k[0] * a[0] ** 2 + (-k[0] * a[0] / a[1]) * a[1] ** 2)) == 0
+
+
+def _random_min_preload_inputs(rng, sign):
+    W1, W2 = rng.uniform(0.5, 50.0, 2)
+    p1 = (rng.uniform(0.05, 2.0), rng.uniform(-1.0, 1.0))
+    p_x2 = sign * rng.uniform(0.05, 3.0)
+    l = rng.uniform(0.1, 3.0)
+    bound = W2 * abs(p_x2) * l ** 2 / np.hypot(W1 * p1[0] + W2 * l, W1 * p1[1])
+    a2 = rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 3.0)
+    a3 = -np.sign(a2) * bound / abs(a2) * rng.uniform(1.05, 5.0)   # -a2 a3 > bound: k1 > 0
+    a1 = rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 3.0)
+    return (W1, W2), (p1, (p_x2, 0.0)), l, (a1, a2, a3)
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_min_preload_2r_with_either_sign_of_p_x2_is_balanced_by_an_independent_energy(sign):
+    rng = np.random.default_rng(7 if sign > 0 else 11)
+    for _ in range(40):
+        weights, coms, l, a_x = _random_min_preload_inputs(rng, sign)
+        d = bl.singh.serial_2r_min_preload(weights, coms, l, a_x)
+        q = d.sample(400, seed=3)
+        v = _energy(d, q)
+        assert np.ptp(v) < 1e-9 * (np.abs(v).max() + sum(weights) * 10), (weights, coms, l, a_x)
+        assert min(s.k for s in d.springs) > 0
+        # least preload: every spring has zero length where the loads' energy is largest
+        q_star = np.array([[d.parameters["theta_star"], sign * np.pi / 2]])
+        assert _energy(d, q_star)[0] == pytest.approx(v.mean(), rel=1e-9)
+        assert v.mean() == pytest.approx(d.potential_energy(q_star).load[0], rel=1e-9)
+        two = bl.singh.serial_2r_two_springs(weights, coms, l, a_x[1])
+        v2 = _energy(two, q)
+        assert len(two.springs) == 2 and np.ptp(v2) < 1e-9 * (np.abs(v2).max() + sum(weights) * 10)
+
+
+def test_singh_fourbar_with_negative_coupler_and_rocker_offsets():
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        weights, coms, _, a_x = _random_min_preload_inputs(rng, -1.0)
+        p_x3 = float(rng.uniform(-0.9, -0.1))
+        crank, coupler, rocker, ground = 1.0, 3.0, 1.0, 3.0
+        bound = weights[1] * abs(coms[1][0]) * crank ** 2 / np.hypot(weights[0] * coms[0][0] + weights[1] * crank,
+                                                                     weights[0] * coms[0][1])
+        a_x = (a_x[0], 1.0, -1.5 * bound)
+        d = bl.singh.singh_fourbar(weights + (7.0,), coms + ((p_x3, 0.0),), crank, coupler, rocker, ground, a_x,
+                                   a4=tuple(rng.uniform(-1, 1, 2)))
+        q = np.linspace(*d.q_range[0], 300)[1:-1, None]
+        ok = d.reachable(q)
+        v = _energy(d, q[ok])
+        assert ok.sum() > 10 and np.ptp(v) < 1e-9 * (np.abs(v).max() + 100)
+
+
+@pytest.mark.parametrize("call, names", [
+    (lambda: bl.singh.serial_2r_min_preload(coms=((1.0, 0.5), (0.0, 0.0))), ["p_x2"]),
+    (lambda: bl.singh.serial_2r_min_preload(coms=((1.0, 0.5), (-2.0, 0.0)), a_x=(1.0, 2.0, 1.0)),
+     ["a_x2", "a_x3", "opposite signs"]),
+    (lambda: bl.singh.serial_2r_min_preload(a_x=(1.0, 0.5, -0.5)), ["k1", "-a_x2 a_x3 >", "2.23263 m^2"]),
+    (lambda: bl.singh.serial_2r_two_springs(coms=((1.0, 0.5), (0.0, 0.0))), ["p_x2"]),
+    (lambda: bl.singh.singh_fourbar(coms=((1.0, 0.5), (2.0, 0.0), (0.0, 0.0))), ["p_x3"]),
+    (lambda: bl.singh.singh_fourbar(a4=(0.0, 0.0)), ["a4"]),
+])
+def test_min_preload_restrictions_are_named(call, names):
+    with pytest.raises(ValueError) as err:
+        call()
+    for name in names:
+        assert name in str(err.value)

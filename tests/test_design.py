@@ -244,11 +244,18 @@ def test_every_mechanism_implements_the_kinematics_contract():
 
 
 def test_kinematics_joint_error_is_honest_where_the_loop_does_not_close():
-    kin = bl.FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6)
+    # a crank that cannot turn fully (Singh's four-bar): beyond its limit the loop does not close
+    kin = bl.FourBarKinematics((0, 0), (4.0, 0), 1.5, 4.0, 1.0)
     joints = bl.fourbar_joints(kin)
     lo, hi = kin.q_range[0]
-    err = kin.joint_error(np.array([[0.5 * (lo + hi)], [hi + 1.0]]), joints)
-    assert err[0] < 1e-12 and np.isinf(err[1])
+    assert hi - lo < 2 * np.pi
+    err = kin.joint_error(np.array([[0.5 * (lo + hi)], [hi + 0.1], [lo - 0.1]]), joints)
+    assert err[0] < 1e-12 and np.isinf(err[1]) and np.isinf(err[2])
+    # a fully rotating crank closes at every angle: one more turn is the same configuration
+    kin = bl.FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6)
+    lo, hi = kin.q_range[0]
+    err = kin.joint_error(np.array([[0.5 * (lo + hi)], [hi + 1.0]]), bl.fourbar_joints(kin))
+    assert err.max() < 1e-12
 
 
 def test_validation_of_sequences_names_the_item():

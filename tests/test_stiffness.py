@@ -461,9 +461,9 @@ def test_chain_bad_inputs():
         SerialChain(**dict(ok, masses=(2.0, 0.0)))
     with pytest.raises(ValueError, match="masses"):
         SerialChain(**dict(ok, masses=(2.0, -1.0)))
-    with pytest.raises(ValueError, match="2 entries"):
+    with pytest.raises(ValueError, match=r"masses \(kg\) must be 2 numbers, got 1"):
         SerialChain(**dict(ok, masses=(2.0,)))
-    with pytest.raises(ValueError, match="2 entries"):
+    with pytest.raises(ValueError, match=r"coms \(m\) must be 2 points \(x, y\), got 1"):
         SerialChain(**dict(ok, coms=((0.1, 0.0),)))
     with pytest.raises(ValueError, match="two coordinates"):
         SerialChain(**dict(ok, coms=((0.1, 0.0, 0.0), (0.1, 0.0))))
@@ -588,3 +588,52 @@ def test_paper_helpers_refuse_missing_or_nonsense_values():
     chain = SerialChain.from_values(2, LUSTIG_TOPOLOGY, v)
     with pytest.raises(ValueError, match="finite"):
         quadratic_energy(chain, [float("nan"), 0.0])
+
+
+# ------------------------------------------------------------------------ families of solutions
+def _independent_chain_energy(design, q):
+    """Gravity and ZFL springs from world points, written here (not the library's energy)."""
+    pts = design.world_points(q, [(ld.body, ld.point) for ld in design.loads])
+    v = -np.einsum("...ij,ij->...", pts, np.array([ld.force for ld in design.loads], dtype=float))
+    a = design.world_points(q, [(s.a.body, s.a.point) for s in design.springs])
+    b = design.world_points(q, [(s.b.body, s.b.point) for s in design.springs])
+    k = np.array([s.k for s in design.springs])
+    return v + (0.5 * k * ((b - a) ** 2).sum(axis=-1)).sum(axis=-1)
+
+
+@pytest.mark.parametrize("unknowns", [("k1", "ax1", "ay1", "bx1", "by1", "k2"), ("k1", "ay1", "bx1", "k2")])
+def test_case1_one_parameter_family_is_reported_and_each_member_balances(unknowns):
+    from balancelab.methods.lustig import SingularChoice, solve_family
+
+    full = lustig_values(1)
+    v = {k: x for k, x in full.items() if k not in unknowns}
+    with pytest.raises(SingularChoice, match="singular.*1-parameter family") as err:
+        solve(2, LUSTIG_TOPOLOGY, v, unknowns)
+    families = solve_family(2, LUSTIG_TOPOLOGY, v, unknowns)
+    assert [f.free for f in err.value.families] == [f.free for f in families]
+    assert len(families) == 1 and len(families[0].free) == 1
+    family = families[0]
+    (free,) = family.free
+    assert family(**{free: full[free]})[free] == full[free]
+    for key, x in family(**{free: full[free]}).items():   # the paper's design is a member
+        assert x == pytest.approx(full[key], rel=1e-12, abs=1e-15)
+    members = [family(**{free: full[free] * f}) for f in (0.6, 1.7)]
+    assert members[0]["k1"] != pytest.approx(members[1]["k1"])
+    q = np.random.default_rng(3).uniform(-np.pi, np.pi, (400, 2))
+    for member in members:
+        assert all(member[k] > 0 for k in member if k[0] == "k")
+        d = SerialChain.from_values(2, LUSTIG_TOPOLOGY, dict(v, **member)).design("member")
+        assert d.balance_report().balanced
+        e = _independent_chain_energy(d, q)
+        assert np.ptp(e) < 1e-9 * np.abs(e).max()
+    with pytest.raises(ValueError, match="free unknowns"):
+        family()
+
+
+def test_a_choice_singular_only_for_the_papers_numbers_is_still_solved():
+    """The generic solution of (k1, ax1, bx1, k2) divides by sy2 = 0; the exact one does not."""
+    full = lustig_values(1)
+    unknowns = ("k1", "ax1", "bx1", "k2")
+    sol = solve(2, LUSTIG_TOPOLOGY, {k: x for k, x in full.items() if k not in unknowns}, unknowns)
+    for key in unknowns:
+        assert sol[key] == pytest.approx(full[key], rel=1e-12, abs=1e-15)

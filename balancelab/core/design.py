@@ -20,7 +20,7 @@ from . import report as _report, symbolic as _symbolic
 from .elements import Joint, Load, Spring, SymbolicParts
 from .kinematics import Kinematics, body_to_world, joint_gaps, spread
 from .report import BALANCE_TOLERANCE, BalanceReport, Energy
-from .validation import positive_int
+from .validation import positive_int, real_array, sequence_of, step_size
 
 __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BALANCE_TOLERANCE"]
 
@@ -39,12 +39,12 @@ def _check_items(loads, springs, joints, nb: int) -> None:
     """Every load is a Load, every spring a Spring, and all name existing bodies."""
     for ld in loads:
         if not isinstance(ld, Load):
-            raise TypeError(f"every load must be a Load, got {type(ld).__name__}")
+            raise TypeError(f"loads: every load must be a Load, got {type(ld).__name__}")
         if not 0 <= ld.body < nb:
             raise ValueError(f"load {ld.name or ld} acts on body {ld.body}; bodies are 0..{nb - 1}")
     for sp in springs:
         if not isinstance(sp, Spring):
-            raise TypeError(f"every spring must be a Spring, got {type(sp).__name__}")
+            raise TypeError(f"springs: every spring must be a Spring, got {type(sp).__name__}")
         for at in (sp.a, sp.b):
             if not 0 <= at.body < nb:
                 raise ValueError(f"spring {sp.name or sp} is attached to body {at.body}; "
@@ -110,7 +110,7 @@ class Design:
         if kinematics.nbodies != nb:
             raise ValueError(f"kinematics describes {kinematics.nbodies} bodies but {nb} are named")
         joints = tuple(Joint(*j) for j in joints)
-        loads, springs = tuple(loads), tuple(springs)
+        loads, springs = sequence_of("loads", loads, Load), sequence_of("springs", springs, Spring)
         _check_items(loads, springs, joints, nb)
         init = object.__setattr__
         for key, value in (("name", str(name)), ("bodies", bodies), ("joints", joints),
@@ -211,19 +211,12 @@ class Design:
     # ------------------------------------------------------------- kinematics
     def check_q(self, q) -> np.ndarray:
         """``q`` as a float array of shape ``(..., dof)``, or a clear error (plain angles for one dof)."""
-        if isinstance(q, (str, bytes)):
-            raise TypeError("q must be numbers (radians), got a string")
-        try:
-            q = np.asarray(q, dtype=float)
-        except (TypeError, ValueError):
-            raise TypeError(f"q must be an array of angles in radians, got {q!r}") from None
+        q = real_array("q (angles in radians)", q)
         if self.dof == 1 and (q.ndim == 0 or q.shape[-1] != 1):
             q = q[..., None]
         if q.ndim == 0 or q.shape[-1] != self.dof:
             raise ValueError(f"q must have shape (..., {self.dof}) for the coordinates {self.q_names}, "
                              f"got shape {q.shape}")
-        if not np.all(np.isfinite(q)):
-            raise ValueError("q must be finite")
         return q
 
     def reachable(self, q) -> np.ndarray:
@@ -469,13 +462,13 @@ class Design:
         ----------
         q : array_like, shape (..., dof)
         h : float
-            Step (rad).
+            Step (rad), in ``(0, 0.1]``.
 
         Returns
         -------
         numpy.ndarray
         """
-        q = self.check_q(q)
+        q, h = self.check_q(q), step_size("h (step, rad)", h, 0.1)
         out = np.empty(q.shape)
         for i in range(self.dof):
             e = np.zeros(self.dof)

@@ -32,19 +32,36 @@ G: float = 9.81
 _REALIZATIONS = ("coil", "gas", "pulley")
 
 
-class Attachment(NamedTuple):
-    """A point fixed to a body: ``body`` index and ``point`` in its local frame (m)."""
-
+class _AttachmentFields(NamedTuple):
     body: int
     point: tuple[float, float]
 
 
+class Attachment(_AttachmentFields):
+    """A point fixed to a body: ``body`` index and ``point`` in its local frame (m).
+
+    Examples
+    --------
+    >>> Attachment(1, (0.2, 0))
+    Attachment(body=1, point=(0.2, 0.0))
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, body: int, point) -> "Attachment":
+        return super().__new__(cls, body_index("attachment body", body), planar_point("attachment point", point))
+
+
 def _attachment(name: str, value) -> Attachment:
+    if isinstance(value, Attachment):
+        return value
     try:
         body, point = value
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be a pair (body, (x, y)), got {value!r}") from None
-    return Attachment(body_index(f"{name} body", body), planar_point(f"{name} point", point))
+    body_index(f"{name} body", body)
+    planar_point(f"{name} point", point)
+    return Attachment(body, point)
 
 
 class Joint(NamedTuple):
@@ -125,7 +142,9 @@ def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "wei
     >>> gravity_load(1, (0.3, 0.0), 2.0).force
     (0.0, -19.62)
     """
-    mass = finite_real("mass", mass, positive=True)
+    mass = finite_real("mass", mass, nonnegative=True)   # a computed mass may be tiny, not zero
+    if mass == 0:
+        raise ValueError("mass must be > 0, got 0.0")
     return Load(body, point, (0.0, -mass * G), name=name, kind=kind)
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from ..core.elements import Joint
-from ..core.validation import finite_real
+from ..core.validation import finite_real, length_or_symbol
 from .base import TreeKinematics
 
 __all__ = ["TWO_TURNS", "serial_2r_joints", "serial_2r_kinematics"]
@@ -18,6 +18,14 @@ TWO_TURNS = ((-math.pi, math.pi), (-math.pi, math.pi))
 
 
 def serial_2r_joints(l: float) -> list:
+    """The revolute joints of a 2R arm whose link 1 is ``l`` long (m, or a sympy symbol).
+
+    Examples
+    --------
+    >>> serial_2r_joints(1.0)[1].point_i
+    (1.0, 0.0)
+    """
+    l = length_or_symbol("l (length of link 1, m)", l)
     return [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (l, 0.0), 2, (0.0, 0.0))]
 
 

@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 from ..core.design import Design
 from ..core.elements import Joint, Load, Spring
 from ..core.kinematics import Kinematics
-from ..core.validation import finite_real, planar_point
+from ..core.validation import finite_real, instance_of, planar_point, real_array
 from .geometry import Point, as_complex, binary_link_point, circle_intersection, rotate
 
 __all__ = ["PIVOTS", "check_assembly", "pivot_name", "FourBarKinematics", "FourBar", "fourbar_joints",
@@ -63,6 +63,8 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
     ...
     ValueError: this four-bar cannot assemble: with crank 0.1 m, coupler 0.2 m, rocker 0.3 m and ...
     """
+    crank, coupler, rocker, ground = (finite_real(f"{n} (m)", v, positive=True) for n, v in zip(
+        ("crank", "coupler", "rocker", "ground"), (crank, coupler, rocker, ground)))
     if ground + crank < abs(coupler - rocker) or abs(ground - crank) > coupler + rocker:
         raise ValueError(_cannot_assemble(crank, coupler, rocker, ground))
 
@@ -240,7 +242,8 @@ class FourBarKinematics(Kinematics):
         jy = A[1] + self.r2 * np.sin(th)
         kx, ky, closes = circle_intersection((jx, jy), self.r3, B, self.r4, self.branch)
         lo, hi = self.q_range[0]
-        ok = closes & (th >= lo - 1e-12) & (th <= hi + 1e-12)
+        full = hi - lo >= 2 * np.pi - 1e-9   # a fully rotating crank: any angle, modulo 2 pi
+        ok = closes & np.isfinite(th) & (full | ((th >= lo - 1e-12) & (th <= hi + 1e-12)))
         phi = np.arctan2(ky - jy, kx - jx)
         psi = np.arctan2(ky - B[1], kx - B[0])
         out = np.zeros(th.shape + (4, 3))
@@ -415,6 +418,7 @@ def fourbar_joints(linkage: FourBarKinematics | FourBar) -> list[Joint]:
     >>> len(fourbar_joints(FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6)))
     4
     """
+    instance_of("linkage", linkage, (FourBarKinematics, FourBar), "a FourBarKinematics or a FourBar")
     A = (float(linkage.A[0]), float(linkage.A[1]))
     B = (float(linkage.B[0]), float(linkage.B[1]))
     return [Joint(0, A, 1, (0.0, 0.0)), Joint(1, (linkage.crank, 0.0), 2, (0.0, 0.0)),
@@ -440,6 +444,7 @@ def fourbar_labels(linkage: FourBarKinematics | FourBar, coupler_point: Point | 
     >>> fourbar_labels(FourBarKinematics((0, 0), (0.7, 0), 0.3, 0.8, 0.6))["C"]
     (2, (0.8, 0.0))
     """
+    instance_of("linkage", linkage, (FourBarKinematics, FourBar), "a FourBarKinematics or a FourBar")
     labels = {"A": (0, (float(linkage.A[0]), float(linkage.A[1]))),
               "B": (0, (float(linkage.B[0]), float(linkage.B[1]))),
               "D": (1, (linkage.crank, 0.0)), "C": (2, (linkage.coupler, 0.0))}
@@ -478,6 +483,7 @@ def fourbar_design(name: str, fourbar: FourBar, loads: Sequence[Load], springs: 
     >>> fourbar_design("bare four-bar", fb, [], []).bodies
     ('ground', 'crank', 'coupler', 'rocker')
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar")
     lab = fourbar.labels()
     lab.update(labels or {})
     kin = fourbar.kinematics if kinematics is None else kinematics
@@ -503,6 +509,7 @@ def coupler_curve(fourbar: FourBar, n: int = 721) -> np.ndarray:
     >>> coupler_curve(FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.2, 0.12)), 5).shape
     (5, 2)
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
         raise ValueError(f"n must be an integer >= 2, got {n!r}")
     lo, hi = fourbar.kinematics.q_range[0]
@@ -547,6 +554,8 @@ def fourbar_positions(fourbar: FourBar, q: ArrayLike
     >>> bool(ok.all()), C.shape
     (True, (2, 2))
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar")
+    q = real_array("q (crank angles, rad)", q)
     Dx, Dy, Cx, Cy, ok = _joint_positions(fourbar, q)
     Ex, Ey = binary_link_point((Dx, Dy), (Cx, Cy), (0.0, 0.0), (fourbar.coupler, 0.0), fourbar.coupler_point)
     return (np.stack([Dx, Dy], -1), np.stack([Cx, Cy], -1), np.stack([Ex, Ey], -1), ok)
@@ -575,6 +584,8 @@ def loop_closure_error(fourbar: FourBar, q: ArrayLike) -> np.ndarray:
     >>> float(loop_closure_error(fb, [0.0, 2.0]).max()) < 1e-15
     True
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar")
+    q = real_array("q (crank angles, rad)", q)
     Dx, Dy, Cx, Cy, ok = _joint_positions(fourbar, q)
     ux, uy = Cx - Dx, Cy - Dy
     e1 = np.sqrt(ux * ux + uy * uy)

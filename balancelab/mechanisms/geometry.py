@@ -5,13 +5,16 @@ these functions; they work on numpy arrays (vectorized over configurations) and,
 noted, on sympy expressions. Methods that write planar vectors as complex numbers
 convert with :func:`as_complex` and :func:`as_point`; a pose function built on these
 numeric-only tools guards its sympy path with :func:`numeric_only`. Layer: mechanisms;
-imports nothing from balancelab.
+imports only the input checks of ``core``.
 """
 from __future__ import annotations
 
+import math
 from types import ModuleType
 
 import numpy as np
+
+from ..core.validation import planar_point
 
 __all__ = ["Point", "rotate", "binary_link_point", "circle_intersection", "as_complex", "as_point",
            "numeric_only"]
@@ -102,8 +105,12 @@ def as_complex(point: Point | complex) -> complex:
     (0.3-0.2j)
     """
     if isinstance(point, (complex, np.complexfloating)):
-        return complex(point)
-    return complex(point[0], point[1])
+        value = complex(point)
+        if not (math.isfinite(value.real) and math.isfinite(value.imag)):
+            raise ValueError(f"point must be finite, got {value}")
+        return value
+    x, y = planar_point("point", point)
+    return complex(x, y)
 
 
 def as_point(value: complex) -> tuple[float, float]:

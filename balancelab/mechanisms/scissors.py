@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from ..core.elements import Joint
+from ..core.validation import length_or_symbol
 from .base import ExplicitKinematics
 
 __all__ = ["SCISSORS_BODIES", "scissors_kinematics", "scissors_joints"]
@@ -35,7 +36,7 @@ def scissors_kinematics(length: float) -> ExplicitKinematics:
     >>> scissors_kinematics(0.5).nbodies
     8
     """
-    a = length
+    a = length_or_symbol("length (arm length a, m)", length)
 
     def pose_fn(q, lib):
         th = q[0]
@@ -51,8 +52,14 @@ def scissors_kinematics(length: float) -> ExplicitKinematics:
 
 
 def scissors_joints(length: float) -> list:
-    """The revolute joints of the scissors with arms of ``length`` (m)."""
-    a = length
+    """The revolute joints of the scissors with arms of ``length`` (m, or a sympy symbol).
+
+    Examples
+    --------
+    >>> len(scissors_joints(0.5))
+    8
+    """
+    a = length_or_symbol("length (arm length a, m)", length)
     h = a / 2
     return [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (h, 0.0), 2, (h, 0.0)),
             Joint(2, (0.0, 0.0), 3, (0.0, 0.0)), Joint(2, (a, 0.0), 4, (0.0, 0.0)),

@@ -2,9 +2,8 @@
 
 Sources: Lecture 35 (*Theory of Mechanisms*), realizing a zero-free-length spring with
 a string over a pulley and approximate balancing with regular (or gas) springs;
-Deepak & Ananthasuresh 2012, Sec. 1.1 (a negative-free-length spring in parallel with
-an ordinary one) and Sec. 2.3 / Fig. 20 (the pulley-and-string arrangement of the
-prototype).
+Deepak & Ananthasuresh 2012, Sec. 1.1 (a negative-free-length spring in parallel with an
+ordinary one) and Sec. 2.3 / Fig. 20 (the pulley-and-string arrangement of the prototype).
 
 **String over a pulley.** An ordinary spring hangs from the ground; a string tied to
 its end comes down along a fixed line, wraps round a pulley of radius ``rho`` centred at
@@ -28,7 +27,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.elements import G, Load, Pulley, Spring
-from ..core.validation import finite_real, planar_point, positive_int
+from ..core.validation import MIN_POSITIVE, finite_real, finite_reals, instance_of, planar_point, planar_points, positive_int, real_array
 from ..mechanisms.lever import lever_design
 from .registry import register
 
@@ -102,7 +101,7 @@ def pulley_string(center, radius: float, point, spring_direction=(0.0, 1.0), tur
         raise ValueError("spring_direction must be non-zero")
     if turn not in (1, -1):
         raise ValueError(f"turn must be +1 or -1, got {turn!r}")
-    p = np.asarray(point, dtype=float)
+    p = real_array("point (attachment on the moving link, m)", point)
     if p.ndim == 0 or p.shape[-1] != 2:
         raise ValueError(f"point must have shape (..., 2), got {p.shape}")
     if not np.all(np.isfinite(p)):
@@ -188,7 +187,7 @@ def pulley_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: floa
 
 
 def _pulley_springs(design: Design) -> list:
-    pulleys = [s for s in design.springs if s.pulley is not None]
+    pulleys = [s for s in instance_of("design", design, Design, "a balancelab Design").springs if s.pulley]
     if not pulleys:
         raise ValueError(f"{design.name}: no spring is realized by a pulley "
                          "(realization=Pulley(...) or 'pulley')")
@@ -224,6 +223,7 @@ def pulley_energy(design: Design, q, radius: float | None = None):
     True
     """
     pulleys = _pulley_springs(design)
+    q = real_array("q (configurations, rad)", q)
     if radius is not None:
         radius = finite_real("radius (m)", radius, nonnegative=True)
     others = [s for s in design.springs if s.pulley is None]
@@ -279,6 +279,7 @@ def pulley_balance_error(design: Design, radius: float | None = None, n: int = 2
     >>> pulley_balance_error(d, 0.0).variation < 1e-12
     True
     """
+    instance_of("design", design, Design, "a balancelab Design")
     if design.dof != 1:
         raise ValueError("pulley_balance_error handles one-degree-of-freedom designs")
     n = positive_int("n (configurations, at least MIN_CONFIGURATIONS = 10)", n, minimum=10)
@@ -316,8 +317,13 @@ def pulley_error_curve(design: Design, radii, n: int = 2001) -> dict:
     >>> bool(c["variation"][0] > c["variation"][1] > c["variation"][2])
     True
     """
-    radii = np.atleast_1d(np.asarray(radii, dtype=float))
-    errs = [pulley_balance_error(design, float(r), n) for r in radii]
+    radii = np.atleast_1d(real_array("radii (m)", radii))
+    errs = []
+    for i, r in enumerate(radii):
+        try:
+            errs.append(pulley_balance_error(design, float(r), n))
+        except ValueError as err:  # name the radius that fails
+            raise ValueError(f"radii[{i}] = {r} m: {err}") from None
     return {"radius": radii, "variation": np.array([e.variation for e in errs]),
             "residual_torque": np.array([e.residual_torque for e in errs])}
 
@@ -395,6 +401,9 @@ def parallel_springs_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.
         raise ValueError(f"share must be in (0, 1), got {share}")
     k = mass * G * r / (b * c)
     k1, k2 = share * k, (1 - share) * k
+    if min(k1, k2) < MIN_POSITIVE:
+        raise ValueError(f"share = {share} leaves a spring of stiffness {min(k1, k2):g} N/m: choose share "
+                         "in (0, 1) away from its ends")
     l2 = negative_free_length_partner(k1, free_length, k2)
     springs = [Spring(k1, free_length, (0, (0.0, b)), (1, (c, 0.0)), name="k1"),
                Spring(k2, l2, (0, (0.0, b)), (1, (c, 0.0)), name="k2 (negative free length)")]
@@ -524,10 +533,7 @@ def approximate_lever(mass: float = 2.0, length: float = 0.5, theta_range=(-math
 
 
 def _working_range(theta_range) -> tuple[float, float]:
-    try:
-        lo, hi = (float(v) for v in theta_range)
-    except (TypeError, ValueError):
-        raise TypeError(f"theta_range must be a pair (lo, hi) in radians, got {theta_range!r}") from None
+    lo, hi = finite_reals("theta_range (lo, hi, rad)", theta_range, 2)
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
         raise ValueError(f"theta_range must be finite with lo < hi, got {theta_range!r}")
     if hi - lo > 2 * math.pi:
@@ -539,12 +545,13 @@ def _design_bounds(anchor_bounds, attachment_bounds, k_bounds) -> list:
     """Bounds on ``(b_x, b_y, a_x, a_y, k)``, checked."""
     bounds = []
     for name, pair in (("anchor_bounds", anchor_bounds), ("attachment_bounds", attachment_bounds)):
+        pair = planar_points(f"{name} (m)", pair, 2)
         for axis, bnd in zip("xy", pair):
-            blo, bhi = (float(v) for v in bnd)
+            blo, bhi = bnd
             if not blo < bhi:
                 raise ValueError(f"{name} ({axis}) must have lower < upper, got {bnd!r}")
             bounds.append((blo, bhi))
-    klo, khi = (float(v) for v in k_bounds)
+    klo, khi = finite_reals("k_bounds (N/m)", k_bounds, 2)
     if not 0 < klo < khi:
         raise ValueError(f"k_bounds must satisfy 0 < lower < upper, got {k_bounds!r}")
     bounds.append((klo, khi))

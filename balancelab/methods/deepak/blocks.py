@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike
 
 from ...core.design import Design
 from ...core.elements import Joint, Spring
-from ...core.validation import finite_real, planar_point
+from ...core.validation import MAX_MAGNITUDE, finite_real, planar_point
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.geometry import Point, as_complex, as_point
 from ...mechanisms.lever import LEVER_JOINTS, lever_kinematics
@@ -398,7 +398,7 @@ def balancing_springs(W: complex, L: complex, k_e: float, h: float) -> tuple[com
                          "(eq. 3 says H must lie along the direction from K to W); choose h > 0")
     H = W + h * d / dist
     k_b = k_e * dist / h
-    if not math.isfinite(k_b) or k_b <= 0:
+    if not math.isfinite(k_b) or k_b <= 0 or k_b + k_e > MAX_MAGNITUDE:
         raise ValueError(f"h = {h} gives a stiffness k_b = {k_b} that is not finite and positive")
     return H, k_b, k_b + k_e
 

@@ -23,8 +23,8 @@ from typing import NamedTuple, Sequence
 import numpy as np
 
 from ...core.design import Design
-from ...core.validation import finite_real, planar_point
-from ...mechanisms.fourbar import FourBar
+from ...core.validation import MAX_MAGNITUDE, finite_real, instance_of, planar_point, planar_points
+from ...mechanisms.fourbar import FourBar, pivot_name
 from ...mechanisms.geometry import Point, as_complex, as_point
 from .roberts import cognate_driver, cognates
 from .techniques import technique2, technique2_parameters, technique3, technique3_parameters
@@ -112,6 +112,8 @@ def focal_pivot_circles(vertices: Sequence[Point], directions: Sequence[Point]) 
     >>> focal_pivot_circles([(0, 0), (1, 0), (0, 1)], [(1, 1), (0, 1), (1, 0)])
     ('ii', (1.0, 1.0))
     """
+    vertices = planar_points("vertices (m)", vertices, 3)
+    directions = planar_points("directions", directions, 3)
     V = [as_complex(planar_point(f"vertex {i}", v)) for i, v in enumerate(vertices)]
     D = [as_complex(planar_point(f"direction {i}", d)) for i, d in enumerate(directions)]
     if len(V) != 3 or len(D) != 3:
@@ -197,6 +199,21 @@ class CognateFamily(NamedTuple):
         return out
 
 
+def _three_complex(name: str, value) -> tuple:
+    """Three complex numbers (points or directions as ``x + i y``), checked."""
+    if isinstance(value, (str, bytes)) or value is None:
+        raise TypeError(f"{name} must be three complex numbers, got {value!r}")
+    try:
+        items = [complex(v) if not isinstance(v, (str, bytes, bool)) else None for v in value]
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be three complex numbers, got {value!r}") from None
+    if len(items) != 3 or None in items:
+        raise ValueError(f"{name} must be three complex numbers, got {value!r}")
+    if not all(math.isfinite(v.real) and math.isfinite(v.imag) and abs(v) <= MAX_MAGNITUDE for v in items):
+        raise ValueError(f"{name} must be finite, of magnitude <= {MAX_MAGNITUDE:g}, got {value!r}")
+    return tuple(items)
+
+
 def similar_triangle_family(W: Sequence[complex], d: Sequence[complex]
                             ) -> tuple[complex, complex, np.ndarray]:
     """The triangles ``H_1 H_2 H_3`` directly similar to ``W_1 W_2 W_3``, ``H_i`` on the line ``W_i + t d_i``.
@@ -235,6 +252,7 @@ def similar_triangle_family(W: Sequence[complex], d: Sequence[complex]
     >>> round(P.real, 12), round(P.imag, 12), [round(float(v), 12) for v in t]
     (0.1, -0.2, [1.0, 1.0, 1.0])
     """
+    W, d = _three_complex("W", W), _three_complex("d", d)
     M = np.zeros((6, 7))
     for i in range(3):
         # real part: c_x + s_r Wx - s_i Wy - t_i dx ; imag: c_y + s_r Wy + s_i Wx - t_i dy
@@ -295,6 +313,9 @@ def cognate_family(fourbar: FourBar, K: Point, k_l: float, technique: int = 2, p
     >>> f.case, [round(v, 12) for v in f.focal_pivot], [round(r, 12) for r in f.kb_ratio]
     ('ii', [0.1, -0.2], [0.333333333333, 0.333333333333, 0.333333333333])
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("plagiograph_base", plagiograph_base)
+    pivot_name("parallelogram_base", parallelogram_base)
     if technique not in (2, 3):
         raise ValueError(f"technique must be 2 or 3, got {technique!r}")
     K = planar_point("K (load spring anchor, m)", K)
@@ -356,6 +377,9 @@ def kb_ratio_from_triangle(triangle: Sequence[Point], K: Point, technique: int =
     >>> case, [round(v, 6) for v in r]
     ('ii', [0.333333, 0.333333, 0.333333])
     """
+    triangle = planar_points("triangle (m)", triangle, 3)
+    pivot_name("plagiograph_base", plagiograph_base)
+    pivot_name("parallelogram_base", parallelogram_base)
     Wv = [as_complex(planar_point(f"triangle vertex {i + 1}", p)) for i, p in enumerate(triangle)]
     Kc = as_complex(planar_point("K", K))
     if technique not in (2, 3):
@@ -420,6 +444,10 @@ def balance_cognates(fourbar: FourBar, K: Point, k_l: float, technique: int = 2,
     >>> [d.balance_report().balanced for d in ds]
     [True, True, True]
     """
+    lam = finite_real("lam (m)", lam, positive=True)
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("plagiograph_base", plagiograph_base)
+    pivot_name("parallelogram_base", parallelogram_base)
     fam = cognate_family(fourbar, K, k_l, technique, plagiograph_base, parallelogram_base)
     if not fam.feasible:
         raise ValueError("this option cannot give positive k_b on all three cognates at once "

@@ -14,7 +14,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import G, Joint, Load, Spring
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, instance_of, planar_point
 from ...mechanisms.base import ExplicitKinematics, TreeKinematics
 from ...mechanisms.fourbar import FourBar, fourbar_design, pivot_name
 from ...mechanisms.geometry import Point, as_complex, as_point, numeric_only
@@ -52,6 +52,8 @@ def gravity_technique2(fourbar: FourBar, mass: float, k_b: float, base: str = "A
     >>> gravity_technique2(example_fourbar(), 2.0, 400.0).balance_report().balanced
     True
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("base", base)
     mass = finite_real("mass (kg)", mass, positive=True)
     k_b = finite_real("k_b (N/m)", k_b, positive=True)
     base = pivot_name("base", base)
@@ -97,6 +99,8 @@ def gravity_as_spring_limit(fourbar: FourBar, mass: float, k_b: float, R: float,
     >>> round(d.parameters["k_t"] - 400.0, 4)
     0.1962
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("base", base)
     mass = finite_real("mass (kg)", mass, positive=True)
     k_b = finite_real("k_b (N/m)", k_b, positive=True)
     R = finite_real("R (m)", R, positive=True)

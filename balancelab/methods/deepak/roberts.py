@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike
 
 from ...core.design import Design
 from ...core.elements import Spring
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, planar_point, real_array
 from ...mechanisms.base import ExplicitKinematics
 from ...mechanisms.fourbar import FourBar, fourbar_design
 from ...mechanisms.geometry import Point, as_complex, as_point, numeric_only
@@ -152,6 +152,7 @@ def cognate_crank_angles(fourbar: FourBar, q: ArrayLike) -> np.ndarray:
     >>> cognate_crank_angles(example_fourbar(), 0.3).shape
     (3,)
     """
+    q = real_array("q (crank angles, rad)", q)
     _check(fourbar)
     st = fourbar.state(np.asarray(q, dtype=float))
     angs = _cognate_angles(fourbar, st)
@@ -193,6 +194,7 @@ def cognate_design(fourbar: FourBar, index: int, K: Point | None = None, k_l: fl
     >>> float(d.joint_error(d.sample(50)).max()) < 1e-12
     True
     """
+    k_l = finite_real("k_l (N/m)", k_l, positive=True)
     index = _index(index)
     cg = cognates(fourbar)[index - 1]
     springs, labels = [], {}
@@ -276,6 +278,7 @@ def cognate_designs(fourbar: FourBar, K: Point, k_l: float) -> tuple[Design, Des
     >>> [d.balance_report().balanced for d in cognate_designs(example_fourbar(), (0.1, -0.2), 100.0)]
     [False, False, False]
     """
+    K = planar_point("K (m)", K)
     return tuple(cognate_design(fourbar, i, K, k_l) for i in (1, 2, 3))
 
 

@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike
 
 from ...core.design import Design
 from ...core.elements import Joint, Spring
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, instance_of, planar_point, real_array
 from ...mechanisms.base import ExplicitKinematics
 from ...mechanisms.fourbar import FourBar, coupler_curve
 from ...mechanisms.geometry import Point, as_complex, circle_intersection, numeric_only
@@ -70,6 +70,7 @@ def technique1_feasible(fourbar: FourBar, K: Point, length_1: float, length_2: f
     >>> technique1_feasible(example_fourbar(), (0.1, -0.2), 0.3, 0.3)
     True
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
     K = planar_point("K", K)
     l1, l2 = _lengths(length_1, length_2)
     E = coupler_curve(fourbar, 4001)
@@ -108,6 +109,9 @@ def technique1_family(fourbar: FourBar, K: Point, k_l: float, length_1_values: A
     >>> f["feasible"].tolist()
     [[False, False], [False, True]]
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    length_1_values = real_array("length_1_values (m)", length_1_values)
+    length_2_values = real_array("length_2_values (m)", length_2_values)
     K = planar_point("K (load spring anchor, m)", K)
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
     l1 = np.atleast_1d(np.asarray(length_1_values, dtype=float))
@@ -162,6 +166,7 @@ def technique1(fourbar: FourBar, K: Point, k_l: float, length_1: float, length_2
     >>> technique1(example_fourbar(), (0.1, -0.2), 100.0, 0.3, 0.3).balance_report().balanced
     True
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
     K = planar_point("K (load spring anchor, m)", K)
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
     l1, l2 = _lengths(length_1, length_2)
@@ -170,7 +175,7 @@ def technique1(fourbar: FourBar, K: Point, k_l: float, length_1: float, length_2
     if not technique1_feasible(fourbar, K, l1, l2):
         E = coupler_curve(fourbar, 4001)
         dist = np.hypot(E[:, 0] - K[0], E[:, 1] - K[1])
-        raise ValueError(f"technique 1 with l1 = {l1} m, l2 = {l2} m cannot assemble: |KE| spans "
+        raise ValueError(f"technique 1 with length_1 = {l1} m, length_2 = {l2} m cannot assemble: |KE| spans "
                          f"[{dist.min():.4g}, {dist.max():.4g}] m but the dyad closes only for "
                          f"|l1 - l2| < |KE| < l1 + l2 = [{abs(l1 - l2):.4g}, {l1 + l2:.4g}] m")
     Kc = as_complex(K)

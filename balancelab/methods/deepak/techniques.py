@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike
 from ...core.design import Design
 from ...core.elements import Joint, Spring
 from ...core.kinematics import Kinematics
-from ...core.validation import finite_real, planar_point
+from ...core.validation import finite_real, instance_of, planar_point, real_array
 from ...mechanisms.base import ExplicitKinematics
 from ...mechanisms.fourbar import FourBar, coupler_curve, fourbar_design, pivot_name
 from ...mechanisms.geometry import Point, as_complex, as_point, numeric_only
@@ -71,6 +71,7 @@ def load_spring(fourbar: FourBar, K: Point, k_l: float) -> Spring:
     >>> load_spring(example_fourbar(), (0.1, -0.2), 100.0).b.point
     (0.2, 0.12)
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
     return Spring(k_l, 0.0, (0, K), (2, fourbar.coupler_point), name="k_l")
 
 
@@ -100,6 +101,7 @@ def spring_loaded_fourbar(fourbar: FourBar, K: Point, k_l: float) -> Design:
     >>> d.balance_report().balanced
     False
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
     K = planar_point("K (load spring anchor, m)", K)
     k_l = finite_real("k_l (load spring stiffness, N/m)", k_l, positive=True)
     E = coupler_curve(fourbar, 2001)
@@ -166,6 +168,8 @@ def technique2_parameters(fourbar: FourBar, K: Point, k_l: float, base: str = "A
     >>> round(p.k_b, 3), round(p.k_t, 3)
     (223.607, 323.607)
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("base", base)
     K = planar_point("K (load spring anchor, m)", K)
     k_l = finite_real("k_l (load spring stiffness, N/m)", k_l, positive=True)
     base = pivot_name("base", base)
@@ -241,6 +245,9 @@ def technique2_family(fourbar: FourBar, K: Point, k_l: float, base: str, h_value
     >>> f["feasible"].tolist()
     [False, False, True]
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("base", base)
+    h_values = real_array("h_values (m)", h_values)
     K = as_complex(planar_point("K", K))
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
     return balancing_family(fourbar.pivot(base), K, k_l, h_values)
@@ -325,6 +332,9 @@ def technique3_parameters(fourbar: FourBar, K: Point, k_l: float, plagiograph_ba
     >>> round(p.m, 4)
     1.5006
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("plagiograph_base", plagiograph_base)
+    pivot_name("parallelogram_base", parallelogram_base)
     K = planar_point("K (load spring anchor, m)", K)
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
     U, rho, L = _t3_setup(fourbar, K, plagiograph_base)
@@ -429,6 +439,10 @@ def technique3_family(fourbar: FourBar, K: Point, k_l: float, plagiograph_base: 
     >>> f["feasible"].tolist()
     [False, True]
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("plagiograph_base", plagiograph_base)
+    pivot_name("parallelogram_base", parallelogram_base)
+    h_values = real_array("h_values (m)", h_values)
     K = planar_point("K", K)
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
     U, rho, L = _t3_setup(fourbar, K, plagiograph_base)
@@ -462,6 +476,8 @@ def herder(fourbar: FourBar, K: Point, k_l: float, pivot: str = "A", h: float = 
     >>> herder(example_fourbar(), (0.1, -0.2), 100.0, "B", 0.1).balance_report().balanced
     True
     """
+    instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
+    pivot_name("pivot", pivot)
     pivot = pivot_name("pivot", pivot)
     d = technique3(fourbar, K, k_l, pivot, pivot, h)
     return d.replace(name=f"spring-loaded four-bar, Herder's method (base {pivot})",

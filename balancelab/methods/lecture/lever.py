@@ -11,7 +11,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import G, Spring, SymbolicParts, gravity_load
-from ...core.validation import finite_real, planar_point
+from ...core.validation import body_index, finite_real, planar_point
 from ...mechanisms.lever import lever_design
 
 __all__ = ["link_spring", "single_link_counterweight", "single_link_spring",
@@ -62,6 +62,8 @@ def link_spring(first_moment, b: float, c: float, *, body: int = 1, pivot_on_anc
     >>> round(s.k, 2)
     981.0
     """
+    anchor_body = body_index("anchor_body", anchor_body)
+    body = body_index("body", body)
     M = np.asarray(planar_point("first_moment", first_moment))
     b = finite_real("b (anchor height above the pivot, m)", b, positive=True)
     c = finite_real("c (attachment distance from the pivot, m)", c, positive=True)

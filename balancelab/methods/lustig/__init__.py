@@ -28,7 +28,8 @@ What lives here
     the balance conditions (the off-diagonal entries), the gravity conditions.
 ``solving``
     solving the conditions for chosen unknowns (cached symbolic solution), the
-    balanced design.
+    balanced design; a choice that leaves unknowns free reports its family of solutions
+    (``SingularChoice``, ``solve_family``).
 ``all_pairs``
     a chain with a spring between every pair of links, balanced without sympy.
 ``paper``
@@ -38,7 +39,8 @@ What lives here
 from .chain import SerialChain, chain_kinematics, chain_parameter_names
 from .matrix import quadratic_energy, stiffness_matrix, stiffness_matrix_symbolic
 from .conditions import constraint_equations, constraint_residuals, diagonal_residual, gravity_conditions
-from .solving import InfeasibleDesign, solve, solve_symbolic, synthesize
+from .solving import (InfeasibleDesign, SingularChoice, SolutionFamily, solve, solve_family, solve_symbolic,
+                      synthesize)
 from .all_pairs import balance_all_pairs
 from .paper import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, lustig_a1, lustig_alpha, lustig_b1, lustig_case1,
                     lustig_case2, lustig_case3, lustig_case4, lustig_min_energy_pose, lustig_table3e_case,
@@ -47,7 +49,8 @@ from .paper import (LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, lustig_a1, lustig_alpha, l
 __all__ = ["SerialChain", "InfeasibleDesign", "chain_kinematics", "chain_parameter_names",
            "stiffness_matrix", "stiffness_matrix_symbolic", "constraint_equations",
            "constraint_residuals", "gravity_conditions", "diagonal_residual", "quadratic_energy",
-           "solve", "solve_symbolic", "synthesize", "balance_all_pairs", "LUSTIG_TOPOLOGY",
+           "solve", "solve_family", "SingularChoice", "SolutionFamily", "solve_symbolic", "synthesize",
+           "balance_all_pairs", "LUSTIG_TOPOLOGY",
            "LUSTIG_UNKNOWNS", "lustig_values", "lustig_table3e_case", "lustig_case1",
            "lustig_case2", "lustig_case3", "lustig_case4", "lustig_alpha", "lustig_b1", "lustig_a1",
            "lustig_min_energy_pose", "spring2_invariant"]

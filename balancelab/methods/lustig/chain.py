@@ -37,7 +37,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import G, Joint, Spring, SymbolicParts, gravity_load
 from ...core.kinematics import Kinematics
-from ...core.validation import finite_real, planar_point
+from ...core.validation import body_index, finite_reals, planar_points
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.geometry import rotate
 
@@ -48,30 +48,10 @@ REFERENCE = ("Lustig, Dunning & Herder, IFToMM World Congress 2015, stiffness-ma
              "in Cartesian coordinates, eqs 1-20, Table 3e")
 
 
-def _positive_tuple(name: str, values, n: int | None = None) -> tuple[float, ...]:
-    if isinstance(values, (str, bytes)):
-        raise TypeError(f"{name} must be a sequence of numbers, got a string")
-    try:
-        items = list(values)
-    except TypeError:
-        raise TypeError(f"{name} must be a sequence of numbers, got {values!r}") from None
-    if n is not None and len(items) != n:
-        raise ValueError(f"{name} must have {n} entries (one per moving link), got {len(items)}")
-    return tuple(finite_real(f"{name}[{i}]", v, positive=True) for i, v in enumerate(items))
-
-
-def _checked_coms(coms, n: int) -> tuple:
-    try:
-        items = list(coms)
-    except TypeError:
-        raise TypeError(f"coms must be a sequence of (s_x, s_y) points, got {coms!r}") from None
-    if len(items) != n:
-        raise ValueError(f"coms must have {n} entries (one per moving link), got {len(items)}")
-    return tuple(planar_point(f"coms[{i}]", c) for i, c in enumerate(items))
-
-
 def _checked_springs(springs, n: int) -> tuple:
     """ZFL springs on bodies 0..n, each turned so that ``a`` is on the proximal body."""
+    if isinstance(springs, (str, bytes, Spring)) or not hasattr(springs, "__iter__"):
+        raise TypeError(f"springs must be a sequence of Springs, got {springs!r}")
     out = []
     for j, s in enumerate(springs):
         if not isinstance(s, Spring):
@@ -124,12 +104,12 @@ class SerialChain:
     springs: tuple = ()
 
     def __post_init__(self) -> None:
-        lengths = _positive_tuple("lengths (m)", self.lengths)
+        lengths = finite_reals("lengths (m)", self.lengths, None, positive=True)
         n = len(lengths)
         if not 1 <= n <= 8:
             raise ValueError(f"a serial chain needs 1 to 8 moving links, got {n}")
-        masses = _positive_tuple("masses (kg)", self.masses, n)
-        coms = _checked_coms(self.coms, n)
+        masses = finite_reals("masses (kg)", self.masses, n, positive=True)
+        coms = planar_points("coms (m)", self.coms, n)
         springs = _checked_springs(self.springs, n)
         object.__setattr__(self, "lengths", lengths)
         object.__setattr__(self, "masses", masses)
@@ -305,7 +285,7 @@ def chain_kinematics(lengths: Sequence[float]) -> TreeKinematics:
     >>> k.poses([0.0, 1.5707963267948966])[0][2].round(6).tolist()
     [0.3, 0.0, 1.570796]
     """
-    lengths = _positive_tuple("lengths (m)", lengths)
+    lengths = finite_reals("lengths (m)", lengths, None, positive=True)
     n = len(lengths)
     A = np.vstack([np.zeros((1, n)), np.eye(n)])
     names = tuple(f"theta_{i}" for i in range(1, n + 1))
@@ -343,10 +323,12 @@ def check_topology(n: int, topology) -> tuple[int, tuple]:
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 8:
         raise ValueError(f"n (number of moving links) must be an integer in 1..8, got {n!r}")
+    if isinstance(topology, (str, bytes, dict)) or topology is None:
+        raise TypeError(f"topology must be a sequence of (body, body) pairs, got {topology!r}")
     try:
-        pairs = [tuple(int(b) for b in p) for p in topology]
-    except (TypeError, ValueError):
-        raise TypeError(f"topology must be a sequence of (body, body) pairs, got {topology!r}") from None
+        pairs = [tuple(body_index(f"topology[{j}]", b) for b in p) for j, p in enumerate(topology)]
+    except TypeError as err:
+        raise TypeError(f"topology must be a sequence of (body, body) pairs of ints: {err}") from None
     out = []
     for j, p in enumerate(pairs):
         if len(p) != 2:

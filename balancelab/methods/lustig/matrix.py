@@ -18,7 +18,7 @@ import functools
 import numpy as np
 
 from ...core.elements import G
-from ...core.validation import finite_real
+from ...core.validation import finite_real, instance_of, real_array
 from .chain import SerialChain, chain_parameter_names, check_topology
 
 __all__ = ["stiffness_matrix", "stiffness_matrix_symbolic", "quadratic_energy"]
@@ -120,7 +120,8 @@ def quadratic_energy(chain: SerialChain, q, g: float = G) -> np.ndarray:
     >>> bool(abs(e[0] - e[1]) < 1e-12)
     True
     """
-    q = np.asarray(q, dtype=float)
+    instance_of("chain", chain, SerialChain, "a SerialChain")
+    q = real_array("q (absolute link angles, rad)", q)
     if q.ndim == 0 or q.shape[-1] != chain.n:
         raise ValueError(f"q must have shape (..., {chain.n}), got {q.shape}")
     if not np.all(np.isfinite(q)):

@@ -16,7 +16,7 @@ from ...core.design import Design
 from ...core.elements import G
 from ...core.validation import finite_real
 from ..registry import example
-from .chain import REFERENCE, SerialChain
+from .chain import REFERENCE, SerialChain, chain_parameter_names
 from .solving import solve
 
 __all__ = ["LUSTIG_TOPOLOGY", "LUSTIG_UNKNOWNS", "LUSTIG_L3", "lustig_values", "lustig_table3e_case",
@@ -176,6 +176,11 @@ def _vals(values, needs: tuple = ()) -> dict:
         v = dict(values)
     else:
         raise TypeError(f"values must be a mapping of parameter names or a Design, got {type(values).__name__}")
+    known = chain_parameter_names(2, LUSTIG_TOPOLOGY)
+    extra = [name for name in v if name not in known]
+    if extra and not isinstance(values, Design):
+        raise ValueError(f"values has entries {extra} that are not parameters of Lustig's chain; "
+                         f"valid names: {known}")
     missing = [name for name in needs if name not in v]
     if missing:
         raise ValueError(f"values lacks {', '.join(missing)} (needed: {', '.join(needs)})")

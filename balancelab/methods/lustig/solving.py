@@ -18,7 +18,8 @@ from ...core.validation import finite_real
 from .chain import SerialChain, chain_parameter_names, check_topology
 from .conditions import condition_system
 
-__all__ = ["InfeasibleDesign", "solve", "solve_symbolic", "synthesize"]
+__all__ = ["InfeasibleDesign", "SingularChoice", "SolutionFamily", "solve", "solve_family", "solve_symbolic",
+           "synthesize"]
 
 
 class InfeasibleDesign(ValueError):
@@ -31,6 +32,82 @@ class InfeasibleDesign(ValueError):
     >>> issubclass(InfeasibleDesign, ValueError)
     True
     """
+
+
+class SolutionFamily:
+    """A family of solutions of the balance conditions: some unknowns stay free.
+
+    Attributes
+    ----------
+    unknowns : tuple of str
+        The unknowns solved for.
+    free : tuple of str
+        The unknowns the conditions leave free (the family's parameters).
+    expressions : dict of str to sympy expression
+        Every unknown in the free ones (a free unknown maps to its own symbol), with the
+        known values substituted (exact rationals of the given floats).
+
+    Examples
+    --------
+    >>> from balancelab.methods.lustig import LUSTIG_TOPOLOGY, lustig_values
+    >>> unknowns = ("k1", "ax1", "ay1", "bx1", "by1", "k2")
+    >>> v = {k: x for k, x in lustig_values(1).items() if k not in unknowns}
+    >>> family = solve_family(2, LUSTIG_TOPOLOGY, v, unknowns)[0]
+    >>> family.free
+    ('k1',)
+    >>> round(family(k1=300.0)["ay1"], 6), round(family(k1=300.0)["bx1"], 4)
+    (0.0872, 0.1125)
+    """
+
+    def __init__(self, unknowns: tuple, free: tuple, expressions: dict):
+        self.unknowns = tuple(unknowns)
+        self.free = tuple(free)
+        self.expressions = dict(expressions)
+
+    def symbols(self) -> tuple:
+        """The free unknowns as the sympy symbols of :attr:`expressions`, in :attr:`free` order."""
+        return tuple(self.expressions[f] for f in self.free)
+
+    def __call__(self, **free_values: float) -> dict:
+        """The member of the family with the given values of the free unknowns (floats).
+
+        Not checked for admissibility: a member may need a negative stiffness.
+        """
+        import sympy as sp
+
+        missing = [f for f in self.free if f not in free_values]
+        extra = [k for k in free_values if k not in self.free]
+        if missing or extra:
+            raise ValueError(f"give exactly the free unknowns {list(self.free)}; missing {missing}, "
+                             f"not free {extra}")
+        subs = {sym: finite_real(name, free_values[name]) for sym, name in zip(self.symbols(), self.free)}
+        out = {}
+        for name in self.unknowns:
+            value = complex(sp.sympify(sp.sympify(self.expressions[name]).xreplace(subs)).evalf(17))
+            if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)):
+                raise ValueError(f"{name} is complex for these values of {list(self.free)}")
+            out[name] = value.real
+        return out
+
+    def __repr__(self) -> str:
+        return f"SolutionFamily(free={self.free}, expressions={self.expressions})"
+
+
+class SingularChoice(ValueError):
+    """Raised by :func:`solve` when the conditions leave some unknowns free.
+
+    ``families`` holds the solution families (:class:`SolutionFamily`) when they could be
+    computed for the given numbers, else is empty.
+
+    Examples
+    --------
+    >>> issubclass(SingularChoice, ValueError)
+    True
+    """
+
+    def __init__(self, message: str, families: tuple = ()):
+        super().__init__(message)
+        self.families = tuple(families)
 
 
 _POSITIVE_PREFIX = ("k", "m", "L")
@@ -156,15 +233,25 @@ def _block_solve(exprs, unk, steps=(), whole: bool = False) -> list:
     return out
 
 
-def _solve_numeric_values(n, topology, known_values: dict, unknowns: tuple):
-    """Fallback: solve with the known numbers substituted (floats)."""
+def _exact_solutions(n, topology, known_values: dict, unknowns: tuple) -> list:
+    """Every solution branch with the known numbers substituted as exact rationals.
+
+    ``sympy.solve`` on rationals (floats make it slow and miss degenerate branches);
+    a branch that leaves unknowns free is a family. Returns ``(free, {name: expr})`` pairs.
+    """
     import sympy as sp
 
     syms, eqs = condition_system(n, topology)
-    subs = {syms[k]: sp.Float(v, 17) for k, v in known_values.items()}
-    exprs = [sp.expand(e.lhs.xreplace(subs)) for e in eqs.values()]
+    subs = {syms[k]: sp.Rational(repr(float(v))) for k, v in known_values.items()}
+    exprs = [e for e in (sp.expand(e.lhs.xreplace(subs)) for e in eqs.values()) if e != 0]
     unk = [syms[u] for u in unknowns]
-    return _block_solve(exprs, unk)
+    if not exprs:
+        return [(tuple(unknowns), {u: syms[u] for u in unknowns})]
+    out = []
+    for sol in sp.solve(exprs, unk, dict=True):
+        free = tuple(u for u in unknowns if syms[u] not in sol)
+        out.append((free, {u: sol.get(syms[u], syms[u]) for u in unknowns}))
+    return out
 
 
 def solve_symbolic(n: int, topology, unknowns: Sequence[str], *, simplify: bool = True) -> list:
@@ -197,6 +284,8 @@ def solve_symbolic(n: int, topology, unknowns: Sequence[str], *, simplify: bool 
     >>> sol["ax1"]
     g*m2*sy2/(L2*k1)
     """
+    if unknowns is None or isinstance(unknowns, (str, bytes, dict)) or not hasattr(unknowns, "__iter__"):
+        raise TypeError(f"unknowns must be a sequence of parameter names, got {unknowns!r}")
     n, topology = check_topology(n, topology)
     names = chain_parameter_names(n, topology)
     unknowns = tuple(unknowns)
@@ -215,6 +304,8 @@ def solve_symbolic(n: int, topology, unknowns: Sequence[str], *, simplify: bool 
 def _checked_unknowns(names: tuple, unknowns) -> tuple:
     if isinstance(unknowns, str):
         unknowns = (unknowns,)
+    if unknowns is None or isinstance(unknowns, (bytes, dict)) or not hasattr(unknowns, "__iter__"):
+        raise TypeError(f"unknowns must be a sequence of parameter names, got {unknowns!r}")
     unknowns = tuple(unknowns)
     if not unknowns:
         raise ValueError("unknowns is empty: name the parameters to solve for")
@@ -228,6 +319,8 @@ def _checked_unknowns(names: tuple, unknowns) -> tuple:
 
 def _known_values(names: tuple, values: Mapping[str, float], unknowns: tuple) -> dict:
     """Every parameter that is not an unknown, checked (``g`` defaults to 9.81 m/s^2)."""
+    if not isinstance(values, Mapping):
+        raise TypeError(f"values must be a mapping of parameter names to numbers, got {values!r}"[:300])
     extra = [k for k in values if k not in names]
     if extra:
         raise ValueError(f"values has entries {extra} that are not parameters of this chain; "
@@ -287,17 +380,23 @@ def _evaluate(programs, known: dict, unknowns: tuple) -> tuple[list, bool, tuple
 
 
 def _candidate_solutions(n: int, topology: tuple, known: dict, unknowns: tuple) -> list:
-    """The generic solution evaluated with the numbers; where it fails, the system solved
-    again with the numbers substituted."""
+    """The generic solution evaluated with the numbers; where it fails, or leaves unknowns
+    free, the system solved again exactly with the numbers substituted."""
     candidates, failed, singular = _evaluate(_symbolic_solution(n, topology, unknowns), known,
                                              unknowns)
-    if failed and not candidates:
-        programs = _solve_numeric_values(n, topology, known, unknowns)
-        candidates, _, again = _evaluate(programs, known, unknowns)
-        singular = again or singular
-    if not candidates and singular:
-        raise ValueError(f"singular choice of unknowns: the balance conditions leave {list(singular)} "
-                         "free (infinitely many solutions); choose fewer or other unknowns")
+    families = []
+    if not candidates:   # generic solution fails, is empty or leaves unknowns free for these numbers
+        for free, sol in _exact_solutions(n, topology, known, unknowns):
+            if free:
+                families.append(SolutionFamily(unknowns, free, sol))
+            else:
+                candidates.append({u: complex(sol[u].evalf(17)) for u in unknowns})
+    if not candidates and (families or singular):
+        free = sorted({f for fam in families for f in fam.free}) or list(singular)
+        raise SingularChoice(f"singular choice of unknowns: the balance conditions leave {free} free "
+                             f"(a {len(free)}-parameter family of solutions, in the error's "
+                             "`families` and from solve_family); choose fewer or other unknowns",
+                             families)
     if not candidates:
         raise ValueError(f"the balance conditions have no solution for the unknowns {list(unknowns)} "
                          "with these values (the system is overdetermined or inconsistent)")
@@ -386,8 +485,10 @@ def solve(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str]
     ------
     ValueError
         Unknown names, missing values, an unknown that does not enter any condition,
-        more unknowns than conditions, a singular choice (some unknowns left free) or
-        no solution / several admissible solutions.
+        more unknowns than conditions, or no solution / several admissible solutions.
+    SingularChoice
+        A ``ValueError``: the conditions leave some unknowns free; its ``families``
+        (and :func:`solve_family`) give the free unknowns and the parametrized solution.
     InfeasibleDesign
         If every real solution needs a negative stiffness (or a non-positive mass or
         length).
@@ -401,6 +502,9 @@ def solve(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str]
     (261.6, 0.1125, -0.0981)
     """
     n, topology = check_topology(n, topology)
+    tol = finite_real("tol", tol, positive=True)
+    if tol >= 1:
+        raise ValueError(f"tol must be a relative tolerance in (0, 1), got {tol}")
     names = chain_parameter_names(n, topology)
     unknowns = _checked_unknowns(names, unknowns)
     known = _known_values(names, values, unknowns)
@@ -413,6 +517,41 @@ def solve(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str]
                          "with these values: the conditions the unknowns do not enter are violated "
                          "(overdetermined or inconsistent choice)")
     return _admissible_solution(checked, unknowns)
+
+
+def solve_family(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str]) -> list:
+    """Every solution of the balance conditions for ``unknowns``, free unknowns included.
+
+    Where :func:`solve` needs a unique solution (and raises :class:`SingularChoice` when
+    the conditions leave unknowns free), this returns each solution branch as a
+    :class:`SolutionFamily`: its ``free`` unknowns (none for an isolated solution) and
+    every unknown as an expression in them. The known numbers are substituted as exact
+    rationals, so a choice that is singular only for these numbers (Lustig's case 1 with
+    ``k1, a1, b1, k2`` unknown: one condition vanishes identically) is found.
+
+    Parameters
+    ----------
+    n, topology, values, unknowns
+        As in :func:`solve`.
+
+    Returns
+    -------
+    list of SolutionFamily
+        One per branch; empty if the conditions have no solution.
+
+    Examples
+    --------
+    >>> from balancelab.methods.lustig import LUSTIG_TOPOLOGY, lustig_values
+    >>> v = {k: x for k, x in lustig_values(1).items() if k not in ("k1", "ay1", "bx1", "k2")}
+    >>> [f.free for f in solve_family(2, LUSTIG_TOPOLOGY, v, ("k1", "ay1", "bx1", "k2"))]
+    [('k2',)]
+    """
+    n, topology = check_topology(n, topology)
+    names = chain_parameter_names(n, topology)
+    unknowns = _checked_unknowns(names, unknowns)
+    known = _known_values(names, values, unknowns)
+    _check_determinable(n, topology, unknowns)
+    return [SolutionFamily(unknowns, free, sol) for free, sol in _exact_solutions(n, topology, known, unknowns)]
 
 
 def synthesize(n: int, topology, values: Mapping[str, float], unknowns: Sequence[str], *,
@@ -443,6 +582,8 @@ def synthesize(n: int, topology, values: Mapping[str, float], unknowns: Sequence
     >>> d.balance_report().balanced
     True
     """
+    if not isinstance(values, Mapping):
+        raise TypeError(f"values must be a mapping of parameter names to numbers, got {values!r}"[:300])
     n, topology = check_topology(n, topology)
     if values.get("g", G) != G:
         raise ValueError("a Design uses g = 9.81 m/s^2; leave g out of values (or set it to 9.81)")

@@ -27,7 +27,8 @@ import random
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ...core.validation import positive_int
+from ...core.design import Design
+from ...core.validation import instance_of, positive_int
 
 __all__ = ["ChainConditions", "chain_conditions", "chain_solution_point", "design_point",
            "conditions_rank"]
@@ -270,7 +271,7 @@ def chain_solution_point(N: int, seed: int = 0) -> dict:
     import sympy as sp
 
     cond = chain_conditions(N)
-    rng = random.Random(seed)
+    rng = random.Random(positive_int("seed", seed, minimum=0))
     W = [_rational(rng, 1, 10) for _ in range(N)]
     ls = [_rational(rng, 0.5, 2) for _ in range(N - 1)]
     dirs = []
@@ -340,6 +341,7 @@ def design_point(design, exact: bool = False) -> dict:
     >>> [str(p[s]) for s in chain_conditions(2).unknowns[:5]]
     ['55/2', '1', '0', '3/5', '4/5']
     """
+    instance_of("design", design, Design, "a balancelab Design (a Singh 2R)")
     import sympy as sp
 
     def num(v):
@@ -392,6 +394,7 @@ def conditions_rank(N: int, values: dict | None = None, seed: int = 0) -> dict:
     >>> conditions_rank(2)
     {'unknowns': 15, 'balance_rank': 6, 'zero_length_rank': 6, 'rank': 10, 'free': 5}
     """
+    positive_int("seed", seed, minimum=0)
     cond = chain_conditions(N)
     values = chain_solution_point(N, seed) if values is None else values
     bad = [r for r in cond.residuals(values) if r != 0]

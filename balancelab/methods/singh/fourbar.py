@@ -6,19 +6,29 @@ the rocker as a lever, all with minimum preload.
 from __future__ import annotations
 
 
-import numpy as np
-
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring
 from ...core.validation import finite_real, finite_reals, planar_point, planar_points
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints
-from .lever import min_preload_lever
 from .serial import serial_2r_min_preload
 
 __all__ = ["singh_fourbar"]
 
 _BODIES = ("ground", "crank", "coupler", "rocker")
+
+
+def _rocker_spring(W3, p_x3, a4, ground):
+    """The rocker as a lever with minimum preload (eqs 18-20), for either sign of ``p_x3``.
+
+    W3 is highest at ``theta_4* = sign(p_x3) 90 deg``; the spring has zero length there:
+    ``b = R(theta_4*) a4`` relative to ``B`` and ``k4 |a4|^2 = W3 |p_x3|`` (the
+    energy ``k4 |a4|^2 (1 - sin(sigma theta_4)) + W3 p_x3 sin theta_4`` is then constant).
+    """
+    sign = 1.0 if p_x3 > 0 else -1.0
+    b = (0.0 - sign * a4[1], sign * a4[0])
+    k = W3 * abs(p_x3) / (a4[0] ** 2 + a4[1] ** 2)
+    return Spring(k, 0.0, (0, (ground + b[0], b[1])), (3, a4), name="k4"), b
 
 
 @example("singh_fourbar", "Four-bar with minimum preload (Singh Sec. III.A: k1 = 17.81, k4 = 20 N/m)",
@@ -49,13 +59,14 @@ def singh_fourbar(weights=(10.0, 20.0, 10.0), coms=((1.0, 0.5), (2.0, 0.0), (0.5
         Weights ``W1, W2, W3`` of crank, coupler and rocker (N), > 0.
     coms : three (float, float)
         Their centres of mass ``p1``, ``(p_x2, 0)``, ``(p_x3, 0)`` (m); coupler's and rocker's
-        on the links' axes.
+        on the links' axes, ``p_x2 != 0`` and ``p_x3 != 0`` of either sign (a negative one
+        puts that body's spring anchors on the other side: its load is highest at -90 deg).
     crank, coupler, rocker, ground : float
         Link lengths (m); the rocker is pivoted at ``(ground, 0)``.
     a_x : (float, float, float)
         Free choices of the 2R (m).
     a4 : (float, float)
-        Attachment of the lever spring on the rocker (m).
+        Attachment of the lever spring on the rocker (m), not ``(0, 0)``.
     branch : {1, -1}
 
     Returns
@@ -74,23 +85,23 @@ def singh_fourbar(weights=(10.0, 20.0, 10.0), coms=((1.0, 0.5), (2.0, 0.0), (0.5
     if p3[1] != 0:
         raise ValueError(f"coms[2] must lie on the rocker's axis, (p_x3, 0), got {p3}")
     p_x2, p_x3 = p2[0], p3[0]
+    if p_x3 == 0:
+        raise ValueError("coms[2]: p_x3 must be non-zero: with W3 on the rocker's pivot the rocker needs "
+                         "no spring")
+    a4 = planar_point("a4 (m)", a4)
+    if a4 == (0.0, 0.0):
+        raise ValueError("a4 must not be the rocker's pivot (0, 0): a spring there cannot balance the rocker")
     kin = FourBarKinematics((0.0, 0.0), (ground, 0.0), crank, coupler, rocker, branch=branch,
                             symbolic="relaxed")
     arm = serial_2r_min_preload((W1, W2), (p1, p2), crank, a_x)
-    a4 = planar_point("a4 (m)", a4)
-    lever = min_preload_lever(W3, p_x3, a4[0], a4[1])
-    B = np.array([ground, 0.0])
-    lever_spring = lever.springs[0]
-    s4 = Spring(lever_spring.k, 0.0, (0, tuple(B + lever_spring.a.point)), (3, lever_spring.b.point),
-                name="k4")
+    s4, lever = _rocker_spring(W3, p_x3, a4, ground)
     loads = [Load(1, tuple(p1), (0.0, -W1), "W1", kind="weight"),
              Load(2, (p_x2, 0.0), (0.0, -W2), "W2", kind="weight"),
              Load(3, (p_x3, 0.0), (0.0, -W3), "W3", kind="weight")]
     params = {k: v for k, v in arm.parameters.items()}
-    params.update({"k4": lever.parameters["k"], "b_x4": lever.parameters["b_x"],
-                   "b_y4": lever.parameters["b_y"], "a_x4": a4[0], "a_y4": a4[1],
-                   "PE_min": arm.parameters["PE_min"] + lever.parameters["PE"]})
-    labels = {"A": (0, (0.0, 0.0)), "B": (0, tuple(B))}
+    params.update({"k4": s4.k, "b_x4": lever[0], "b_y4": lever[1], "a_x4": a4[0], "a_y4": a4[1],
+                   "PE_min": arm.parameters["PE_min"] + W3 * abs(p_x3)})
+    labels = {"A": (0, (0.0, 0.0)), "B": (0, (ground, 0.0))}
     for s in list(arm.springs) + [s4]:
         labels[s.name.replace("k", "b")] = s.a
         labels[s.name.replace("k", "a")] = s.b

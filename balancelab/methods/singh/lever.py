@@ -6,7 +6,7 @@ from __future__ import annotations
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
-from ...core.validation import finite_real
+from ...core.validation import MIN_POSITIVE, finite_real
 from ...mechanisms.lever import lever_design
 
 __all__ = ["lacoste_lever", "generalized_lever", "min_preload_lever"]
@@ -97,11 +97,11 @@ def generalized_lever(weight: float, length: float, a_x: float, b_x: float, b_y:
     a_x = finite_real("a_x (m)", a_x)
     b_x = finite_real("b_x (m)", b_x)
     b_y = finite_real("b_y (m)", b_y)
-    if a_x == 0:
+    if abs(a_x) < MIN_POSITIVE:
         raise ValueError("a_x must be non-zero: a spring attached on the line through the pivot "
-                         "perpendicular to the lever cannot balance it (eq. 16 divides by a_x)")
-    if b_y == 0:
-        raise ValueError("b_y must be non-zero: eq. 15 divides by b_y")
+                         "perpendicular to the lever cannot balance it (eq. 16 divides by a_x; |a_x| >= 1e-12 m)")
+    if abs(b_y) < MIN_POSITIVE:
+        raise ValueError("b_y must be non-zero (|b_y| >= 1e-12 m): eq. 15 divides by b_y")
     if a_x * b_y < 0:
         raise ValueError(f"a_x and b_y must have the same sign (k = W l b_y / (a_x (b_x^2 + b_y^2)) "
                          f"would be negative); got a_x = {a_x}, b_y = {b_y}")

@@ -142,7 +142,7 @@ def serial_2r_simplified(weights=(10.0, 20.0), coms=((1.0, 0.0), (2.0, 0.0)), le
     if vals["a_x1"] * vals["b_y1"] == 0:
         raise ValueError("a_x1 and b_y1 must be non-zero: eq. 25 divides by a_x1 b_y1")
     dy = vals["b_y2"] - vals["b_y3"]
-    hint = "choose a_x2 > 0 > a_x3 with b_y2 > b_y3"
+    hint = "choose a_x2 a_x3 < 0 and (b_y2 - b_y3) p_x2 a_x2 > 0"
     k2 = _positive_k("k2", W2 * p_x2 / (vals["a_x2"] * dy), hint)
     k3 = _positive_k("k3", -W2 * p_x2 / (vals["a_x3"] * dy), hint)
     k1 = _positive_k("k1", (W1 * p1[0] + W2 * l - l * (k2 * vals["b_y2"] + k3 * vals["b_y3"]))
@@ -191,17 +191,42 @@ def _theta_star(W1, W2, p1, l) -> float:
 
 
 def _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3):
-    """Anchors (eqs 42-46) and stiffnesses (eqs 47-49, projected form) of the min-preload 2R."""
+    """Anchors (eqs 42-46) and stiffnesses (eqs 47-49, projected form) of the min-preload 2R.
+
+    Body 2's loads do the most work at ``theta_2* = sign(p_x2) 90 deg`` (W2 straight above
+    the elbow): the paper's ``theta_2 = 90 deg`` is the case ``p_x2 > 0``. The anchors sit
+    where the springs have zero length there, ``b_i = J* + sign(p_x2) (0, a_xi)``, and then
+    ``k2 a_x2^2 + k3 a_x3^2 = W2 |p_x2|`` (with ``k2 a_x2 + k3 a_x3 = 0``).
+    """
     th = _theta_star(W1, W2, p1, l)
-    c, s = math.cos(th), math.sin(th)
+    sign = 1.0 if p_x2 > 0 else -1.0
+    R = math.hypot(W1 * p1[0] + W2 * l, W1 * p1[1])
+    c, s = W1 * p1[1] / R, (W1 * p1[0] + W2 * l) / R   # cos, sin theta* (exact 0 for p_y1 = 0)
     b1 = (ax1 * c, ax1 * s)
-    b2 = (l * c, ax2 + l * s)
-    b3 = (l * c, ax3 + l * s)
-    k2 = W2 * p_x2 / (ax2 * (ax2 - ax3))
-    k3 = -W2 * p_x2 / (ax3 * (ax2 - ax3))
+    b2 = (l * c, sign * ax2 + l * s)
+    b3 = (l * c, sign * ax3 + l * s)
+    k2 = W2 * abs(p_x2) / (ax2 * (ax2 - ax3))
+    k3 = -W2 * abs(p_x2) / (ax3 * (ax2 - ax3))
     k1 = ((W1 * p1[0] + W2 * l - l * (k2 * b2[1] + k3 * b3[1])) * s
           + (W1 * p1[1] - l * (k2 * b2[0] + k3 * b3[0])) * c) / ax1 ** 2
     return th, b1, b2, b3, k1, k2, k3
+
+
+def _free_choice_limits(W1, W2, p1, p_x2, l, ax2, ax3, names=("a_x2", "a_x3")):
+    """Refuse, before solving, free choices that need a spring of negative stiffness.
+
+    With ``k2 a_x2 + k3 a_x3 = 0`` and ``k2 a_x2^2 + k3 a_x3^2 = W2 |p_x2|`` (the
+    minimum-preload conditions of body 2), ``k2, k3 > 0`` exactly when ``a_x2 a_x3 < 0``,
+    and then ``k2 + k3 = W2 |p_x2| / (-a_x2 a_x3)``; ``k1 a_x1^2 = R - (k2 + k3) l^2`` with
+    ``R = |(W1 p_x1 + W2 l, W1 p_y1)|``, so ``k1 > 0`` exactly when
+    ``-a_x2 a_x3 > W2 |p_x2| l^2 / R``.
+    """
+    n2, n3 = names
+    if ax2 * ax3 >= 0:
+        raise ValueError(f"{n2} and {n3} must have opposite signs (springs on both sides of the elbow), "
+                         f"got {n2} = {ax2}, {n3} = {ax3}: otherwise k2 or k3 is not positive (k2 a_x2 + k3 a_x3 = 0 "
+                         f"and k2 a_x2^2 + k3 a_x3^2 = W2 |p_x2| > 0 need a_x2 a_x3 < 0)")
+    return W2 * abs(p_x2) * l ** 2 / math.hypot(W1 * p1[0] + W2 * l, W1 * p1[1])
 
 
 @example("serial_2r_min_preload", "General 2R with minimum preload (Singh eqs 35-49, Sec. III.A numbers)",
@@ -211,16 +236,22 @@ def serial_2r_min_preload(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
     """2R balanced by three ZFL springs with the least preload (Singh eqs 29-49).
 
     Every spring has zero length in the configuration of maximum external work,
-    ``theta_2 = 90 deg`` and ``theta_1 = theta*`` of eq. 35 (computed with ``atan2``), so
-    the balanced energy equals the largest energy of the loads, its lower bound. With
-    the free choices ``a_x1, a_x2, a_x3`` the anchors are (eqs 42-46)
-    ``b_1 = a_x1 (cos theta*, sin theta*)``, ``b_2 = (l cos theta*, a_x2 + l sin theta*)``,
-    ``b_3 = (l cos theta*, a_x3 + l sin theta*)`` and the stiffnesses (eqs 47-49)
-    ``k2 = W2 p_x2 / (a_x2 (a_x2 - a_x3))``, ``k3 = -W2 p_x2 / (a_x3 (a_x2 - a_x3))``, and
-    ``k1`` from eqs 40-41. Eq. 49 divides by ``cos theta*``, which vanishes in the
+    ``theta_1 = theta*`` of eq. 35 (computed with ``atan2``) and ``theta_2* = 90 deg``
+    for ``p_x2 > 0`` (``-90 deg`` for ``p_x2 < 0``: W2 is highest when it is straight
+    above the elbow), so the balanced energy equals the largest energy of the loads, its
+    lower bound. With the free choices ``a_x1, a_x2, a_x3`` and ``sigma = sign(p_x2)`` the
+    anchors are (eqs 42-46) ``b_1 = a_x1 (cos theta*, sin theta*)``,
+    ``b_2 = (l cos theta*, sigma a_x2 + l sin theta*)``,
+    ``b_3 = (l cos theta*, sigma a_x3 + l sin theta*)`` and the stiffnesses (eqs 47-49)
+    ``k2 = W2 |p_x2| / (a_x2 (a_x2 - a_x3))``, ``k3 = -W2 |p_x2| / (a_x3 (a_x2 - a_x3))``,
+    and ``k1`` from eqs 40-41. Eq. 49 divides by ``cos theta*``, which vanishes in the
     simplified case ``p_y1 = 0`` (eqs 29-34); we use the equivalent form
     ``k1 a_x1^2 = [W1 p_x1 + W2 l - l(k2 b_y2 + k3 b_y3)] sin theta* + [W1 p_y1 - l(k2 + k3) b_x2] cos theta*``,
     valid in both cases.
+
+    The paper takes ``theta_2* = 90 deg`` for any ``p_x2``; with ``p_x2 < 0`` that is the
+    configuration of *least* work and its formulas give ``k2 a_x2^2 + k3 a_x3^2 = W2 p_x2 < 0``,
+    which no pair of positive springs meets (for every choice of ``a_x``).
 
     With the defaults this is the 2R of the paper's four-bar example (Sec. III.A:
     ``W1 = 10 N``, ``W2 = 20 N``, ``p1 = (1, 0.5) m``, ``p_x2 = 2 m``, ``a_x = (1, 2, -2) m``);
@@ -232,25 +263,34 @@ def serial_2r_min_preload(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
     weights : (float, float)
         ``W1``, ``W2`` (N), > 0.
     coms : two (float, float)
-        Point ``p1`` of W1 on body 1 and ``(p_x2, 0)`` of W2 on body 2 (m), ``p_x2 != 0``.
+        Point ``p1`` of W1 on body 1 and ``(p_x2, 0)`` of W2 on body 2 (m), ``p_x2 != 0``
+        (either sign).
     length : float
         Length ``l`` of body 1 (m), > 0.
     a_x : (float, float, float)
-        Free choices ``a_x1, a_x2, a_x3`` (m); ``a_x2 > 0 > a_x3`` for ``p_x2 > 0``.
+        Free choices ``a_x1, a_x2, a_x3`` (m), non-zero; ``a_x2`` and ``a_x3`` of opposite
+        signs with ``-a_x2 a_x3 > W2 |p_x2| l^2 / |(W1 p_x1 + W2 l, W1 p_y1)|`` (else ``k1 <= 0``).
 
     Returns
     -------
     Design
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter, for a free choice outside the ranges above or ``p_x2 == 0``.
 
     Examples
     --------
     >>> d = serial_2r_min_preload()
     >>> round(d.parameters["k1"], 2), round(d.parameters["b_y2"], 4)
     (17.81, 3.4884)
+    >>> serial_2r_min_preload(coms=((1.0, 0.5), (-2.0, 0.0))).balance_report().balanced
+    True
     """
     W1, W2, p1, p_x2, l = _check_loads(weights, coms, length)
     try:
-        ax1, ax2, ax3 = (finite_real(f"a_x{i + 1} (m)", v) for i, v in enumerate(a_x))
+        ax1, ax2, ax3 = finite_reals("a_x (m)", a_x, 3)
     except (TypeError, ValueError) as err:
         raise type(err)(f"a_x must be three numbers (a_x1, a_x2, a_x3) in metres: {err}") from None
     if ax2 == ax3:
@@ -259,16 +299,16 @@ def serial_2r_min_preload(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
         raise ValueError("a_x1, a_x2 and a_x3 must be non-zero: a spring attached at a joint "
                          "cannot balance the body")
     if p_x2 == 0:
-        raise ValueError("p_x2 must be non-zero: with W2 on the elbow, body 2 needs no springs")
+        raise ValueError("coms[1]: p_x2 must be non-zero: with W2 on the elbow, body 2 needs no springs")
+    bound = _free_choice_limits(W1, W2, p1, p_x2, l, ax2, ax3)
     th, b1, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, ax1, ax2, ax3)
     c, s = math.cos(th), math.sin(th)
-    hint = "choose a_x2 and a_x3 on opposite sides of the elbow"
-    _positive_k("k2", k2, hint)
-    _positive_k("k3", k3, hint)
-    k1 = _positive_k("k1", k1, "choose another a_x2, a_x3")
-    params = {"theta_star": th, "k1": k1, "k2": k2, "k3": k3, "a_x1": ax1, "a_x2": ax2, "a_x3": ax3,
+    k1 = _positive_k("k1", k1, f"k1 > 0 needs -a_x2 a_x3 > W2 |p_x2| l^2 / |(W1 p_x1 + W2 l, W1 p_y1)| "
+                     f"= {bound:.6g} m^2, got {-ax2 * ax3:.6g} m^2")
+    params = {"theta_star": th, "theta_2_star": math.copysign(math.pi / 2, p_x2), "k1": k1, "k2": k2,
+              "k3": k3, "a_x1": ax1, "a_x2": ax2, "a_x3": ax3,
               "b_x1": b1[0], "b_y1": b1[1], "b_x2": b2[0], "b_y2": b2[1], "b_x3": b3[0], "b_y3": b3[1],
-              "PE_min": (W1 * p1[0] + W2 * l) * s + W1 * p1[1] * c + W2 * p_x2}
+              "PE_min": (W1 * p1[0] + W2 * l) * s + W1 * p1[1] * c + W2 * abs(p_x2)}
     return _singh_design("2R with minimum preload, three ZFL springs", W1, W2, p1, p_x2, l,
                          (ax1, ax2, ax3), (b1[0], b2[0], b3[0]), (b1[1], b2[1], b3[1]), (k1, k2, k3),
                          "Singh & Ananthasuresh, eqs 35-49", params)
@@ -280,14 +320,17 @@ def serial_2r_two_springs(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
     """The general 2R balanced by only two ZFL springs, both on body 2 (Singh eq. 50).
 
     Setting ``k1 = 0`` in eq. 49 fixes ``a_x2 a_x3 = -l W2 p_x2 b_x2 / (W1 p_y1)``; the
-    springs keep the minimum-preload anchors of eqs 44-48. It needs ``p_y1 != 0`` (for
-    ``p_y1 = 0`` spring 1 cannot be removed).
+    springs keep the minimum-preload anchors of eqs 44-48 (see
+    :func:`serial_2r_min_preload`, also for ``p_x2 < 0``). With
+    ``b_x2 = l cos theta* = l W1 p_y1 / R``, ``R = |(W1 p_x1 + W2 l, W1 p_y1)|``, eq. 50 is
+    ``a_x2 a_x3 = -W2 |p_x2| l^2 / R``, which we use: it also holds for ``p_y1 = 0``, where
+    the printed form is ``0/0`` (the two springs then pull the elbow straight up).
 
     Parameters
     ----------
     weights, coms, length : see :func:`serial_2r_min_preload`.
     a_x2 : float
-        The free choice (m); ``a_x3`` follows from eq. 50.
+        The free choice (m), non-zero; ``a_x3`` follows from eq. 50.
 
     Returns
     -------
@@ -301,22 +344,23 @@ def serial_2r_two_springs(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), l
     """
     W1, W2, p1, p_x2, l = _check_loads(weights, coms, length)
     a_x2 = finite_real("a_x2 (m)", a_x2)
-    if p1[1] == 0:
-        raise ValueError("p_y1 must be non-zero: with W1 on the line of body 1 (p_y1 = 0) eq. 50 has "
-                         "no solution and body 1 needs its own spring")
+    if p_x2 == 0:
+        raise ValueError("coms[1]: p_x2 must be non-zero: with W2 on the elbow, body 2 needs no springs")
     if a_x2 == 0:
-        raise ValueError("a_x2 must be non-zero")
-    th = _theta_star(W1, W2, p1, l)
-    bx2 = l * math.cos(th)
-    a_x3 = -l * W2 * p_x2 * bx2 / (W1 * p1[1] * a_x2)
+        raise ValueError("a_x2 must be non-zero: a spring attached at the elbow cannot balance body 2")
+    a_x3 = -W2 * abs(p_x2) * l ** 2 / (math.hypot(W1 * p1[0] + W2 * l, W1 * p1[1]) * a_x2)
+    if a_x3 == 0 or not math.isfinite(a_x3):
+        raise ValueError(f"a_x2 = {a_x2} m gives a_x3 = {a_x3} m (eq. 50): choose a_x2 of the size of the "
+                         "links")
     th, _, b2, b3, k1, k2, k3 = _min_preload(W1, W2, p1, p_x2, l, 1.0, a_x2, a_x3)
-    hint = "a_x2 must lie on the side of W2"
+    hint = "a_x2 a_x3 < 0 makes both positive"
     _positive_k("k2", k2, hint)
     _positive_k("k3", k3, hint)
     ax = (1.0, a_x2, a_x3)
     bx = (0.0, b2[0], b3[0])
     by = (0.0, b2[1], b3[1])
-    params = {"theta_star": th, "k2": k2, "k3": k3, "a_x2": a_x2, "a_x3": a_x3, "b_x2": b2[0],
+    params = {"theta_star": th, "theta_2_star": math.copysign(math.pi / 2, p_x2), "k2": k2, "k3": k3,
+              "a_x2": a_x2, "a_x3": a_x3, "b_x2": b2[0],
               "b_y2": b2[1], "b_x3": b3[0], "b_y3": b3[1], "k1_eq49": k1}
     return _singh_design("2R with two ZFL springs", W1, W2, p1, p_x2, l, ax, bx, by,
                          (0.0, k2, k3), "Singh & Ananthasuresh, eq. 50",
