@@ -167,8 +167,7 @@ class FourBarKinematics(Kinematics):
         if self.r1 == 0:
             raise ValueError("ground pivots A and B coincide; a four-bar needs two distinct pivots")
         self.nbodies = 4
-        self.names = ("theta",)
-        self.descriptions = ("crank angle from the x-axis",)
+        self.names, self.descriptions = ("theta",), ("crank angle from the x-axis",)
         self.symbol_bodies = (1, 3) if symbolic == "loop" else (1, 2, 3)
         self.independent_symbols = symbolic == "relaxed"  # the loop's crank and rocker angles are tied
         check_assembly(self.r2, self.r3, self.r4, self.r1)

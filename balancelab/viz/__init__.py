@@ -19,14 +19,14 @@ the quantities a method defines), matplotlib; never ``course``.
 """
 import importlib
 
-from .animation import animate, animate_parameter, configuration_path
+from .animation import Player, animate, animate_parameter, configuration_path, player
 from .diagram import diagram, point_positions
 from .drawing import Drawing, draw
 from .energy import EnergyView, energy_plot, report_summary
 from .frame import default_q
 from .spaces import cognates_plot, family_plot, lever_valley
 
-__all__ = ["animate", "animate_parameter", "configuration_path", "Drawing", "EnergyView", "cognates_plot",
+__all__ = ["Player", "animate", "animate_parameter", "player", "configuration_path", "Drawing", "EnergyView", "cognates_plot",
            "default_q", "diagram", "draw", "energy_plot", "family_plot", "lever_valley", "point_positions", "report_summary", "explore",
            "Explorer"]
 

@@ -13,6 +13,8 @@ text stays readable when a phone shows it at the page's width.
 * :func:`animate_parameter` rebuilds the design for each value of one parameter (the
   free choice ``a_x`` of a lever, a pulley radius, the position of a pivot on its
   locus ...): scrubbing the player is the static-page counterpart of a lab's slider.
+* :func:`player` turns any matplotlib animation into the page's player, with a text
+  alternative for readers who cannot see it.
 """
 from __future__ import annotations
 
@@ -28,7 +30,7 @@ from . import style
 from .style import FONT, fit_title
 from .frame import Blitter, check_design, default_q
 
-__all__ = ["animate", "animate_parameter", "configuration_path"]
+__all__ = ["Player", "animate", "animate_parameter", "configuration_path", "player"]
 
 #: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB and a frame
 #: shown 350 px wide (a phone) keeps its smallest text >= 9 px (see :mod:`balancelab.viz.style`).
@@ -532,3 +534,66 @@ def _wrap(text: str, width: int = 36) -> str:
     import textwrap
 
     return "\n".join(textwrap.wrap(text, width)[:8])
+
+
+class Player:
+    """A self-contained HTML animation player; Jupyter shows it through ``_repr_html_``.
+
+    Parameters
+    ----------
+    html : str
+        The player's HTML (from :func:`player`).
+    frames : int
+        Number of frames it holds.
+    """
+
+    def __init__(self, html: str, frames: int):
+        self.html, self.frames = html, int(frames)
+
+    def _repr_html_(self) -> str:
+        return self.html
+
+    def __repr__(self) -> str:
+        return f"<animation player, {self.frames} frames>"
+
+
+def player(anim, alt: str, default_mode: str = "loop") -> Player:
+    """The page's player of an animation, its frames described by ``alt``; the figure is closed.
+
+    Parameters
+    ----------
+    anim : matplotlib.animation.Animation
+        From :func:`animate`, :func:`animate_parameter` or any ``FuncAnimation``.
+    alt : str
+        What the animation shows, in words (the text alternative of its frames).
+    default_mode : {"loop", "once", "reflect"}
+        What the player does at the last frame.
+
+    Returns
+    -------
+    Player
+        Displayed as the player in a notebook or a built page.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> p = player(animate(bl.catalog()["lacoste_lever"](), frames=4), "a lever turning")
+    >>> p, 'alt="a lever turning"' in p.html
+    (<animation player, 4 frames>, True)
+    """
+    import re
+    from html import escape
+
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import Animation
+
+    if not isinstance(anim, Animation):
+        raise TypeError(f"anim must be a matplotlib Animation (from animate), got {type(anim).__name__}")
+    if not isinstance(alt, str) or not alt.strip():
+        raise ValueError("alt must describe the animation in words (a non-empty string)")
+    if default_mode not in ("loop", "once", "reflect"):
+        raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
+    html = anim.to_jshtml(default_mode=default_mode)
+    frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
+    plt.close(anim._fig)  # matplotlib keeps the figure only under this name
+    return Player(html.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" id=', 1), frames)
