@@ -2,7 +2,9 @@
 # Installs what the book and its browser test need beyond PyPI (called by scripts/course.sh setup):
 #   * npm (Debian's nodejs/npm) when missing: the book build fetches MathJax 3, require.js and the
 #     ipywidgets HTML manager from the npm registry with `npm pack`;
-#   * Debian's chromium for the browser test (driven by Python playwright; never `playwright install`).
+#   * Debian's chromium for the browser test (driven by Python playwright; never `playwright install`);
+#   * bubblewrap (`bwrap`), the sandbox the lab grader runs each submission in (without it the grader
+#     warns and falls back to resource limits only).
 # Needs root and apt-get for the Debian packages; without them it says what is missing and goes on
 # (the browser test then skips with the reason).
 set -uo pipefail
@@ -10,6 +12,7 @@ PY=${1:-.venv/bin/python}
 need=()
 command -v npm >/dev/null 2>&1 || need+=(nodejs npm)
 command -v chromium >/dev/null 2>&1 || need+=(chromium)
+command -v bwrap >/dev/null 2>&1 || need+=(bubblewrap)
 if [ ${#need[@]} -eq 0 ]; then
     exit 0
 fi

@@ -344,3 +344,127 @@ def test_docstring_examples_of_the_lab_modules_run():
                 balancelab.course.grading):
         result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, mod.__name__
+
+
+# ------------------------------------------------- trusted checking, hints, personal numbers
+
+
+def test_check_and_grader_share_one_judge_on_plain_data():
+    from balancelab.course.check import check_data, encode_answer
+
+    for tid, right in RIGHT.items():
+        answer = right()
+        data = encode_answer(answer)
+        assert check_data(tid, data).correct and check(tid, answer).correct, tid
+        assert check_data(tid, data) == check(tid, answer)
+
+
+def test_unreadable_and_missing_answers():
+    assert check("2.1", ...).message == "No answer yet."
+    forged = Verdict("2.1", True, "ok", "", 100.0, 1.0)
+    v = check("2.1", forged)
+    assert not v.correct and v.score == 0 and "Verdict" in v.message
+
+
+def test_faked_design_subclass_is_judged_from_its_data():
+    from balancelab.core.design import Design
+
+    class Liar(Design):
+        def balance_report(self, *args, **kwargs):
+            raise AssertionError("the check must never call the student's object")
+
+    honest = lab4.lab4_singh_arm((1.6, 1.6, -1.6))
+    assert check("4.3", honest).correct
+    half = honest.replace(springs=[bl.Spring(s.k / 2, s.free_length, s.a, s.b, name=s.name) for s in honest.springs])
+    liar = Liar(half.name, half.bodies, half.joints, half.kinematics, half.loads, half.springs)
+    v = check("4.3", liar)
+    assert not v.correct and "NOT balanced" in v.message
+
+
+def test_srepr_is_parsed_without_evaluating_code(tmp_path):
+    from balancelab.course.check.data import parse_srepr
+
+    target = tmp_path / "x"
+    for text in (f"__import__('os').system('touch {target}')", "Symbol('x').__class__",
+                 "Pow(Integer(10), Integer(10000000000000))", "Pow(Integer(10), Integer(1000000000))",
+                 "lambda: 1"):
+        with pytest.raises((ValueError, SyntaxError)):
+            parse_srepr(text)
+    assert not target.exists()
+    m, r = sp.symbols("m r", positive=True)
+    assert parse_srepr(sp.srepr(m * r / 2 + sp.sin(m) ** 2)) == m * r / 2 + sp.sin(m) ** 2
+
+
+def _scaled(answer, factor):
+    return tuple(float(v) * factor for v in answer) if isinstance(answer, tuple) else float(answer) * factor
+
+
+@pytest.mark.parametrize("tid", [t.id for t in tasks() if t.kind == "numeric"])
+def test_hints_give_bands_not_directions(tid):
+    """Two wrong answers, one too small and one too large by the same factor, get the same hint."""
+    right = RIGHT[tid]()
+    for factor in (1.03, 1.3, 3.0):
+        low, high = check(tid, _scaled(right, 1 / factor)), check(tid, _scaled(right, factor))
+        assert not low.correct and not high.correct
+        assert low.hint == high.hint, (low.hint, high.hint)
+        assert "large" not in low.hint.replace("too large or too small", "")
+
+
+def test_lever_conditions_hold_for_an_anchor_left_of_the_pivot():
+    W, l, ax, by = sp.symbols("W l a_x b_y", positive=True)
+    bx = sp.Symbol("b_x", real=True)
+    assert check("2.2", (-ax * bx / by, W * l * by / (ax * (bx ** 2 + by ** 2)))).correct
+    # |b_x| is b_x only when b_x > 0: wrong for an anchor on the other side
+    assert not check("2.2", (-ax * sp.sqrt(bx ** 2) / by, W * l * by / (ax * (bx ** 2 + by ** 2)))).correct
+    d = bl.singh.generalized_lever(weight=10.0, length=0.5, a_x=0.2, b_x=-0.1, b_y=0.3)
+    assert d.balance_report().balanced
+    assert np.isclose(d.parameters["k"], 10.0 * 0.5 * 0.3 / (0.2 * (0.01 + 0.09)))
+
+
+def test_personal_numbers_are_seeded_by_the_student_and_judged_with_them():
+    from balancelab.course.check import set_student, task_numbers
+
+    assert task_numbers("2.1", "") == ck.LAMP_SPRING
+    mine, other = task_numbers("2.1", "s001"), task_numbers("2.1", "s002")
+    assert mine == task_numbers("2.1", "s001") and mine != other
+    k = bl.lecture.single_link_spring(**mine).parameters["k"]
+    assert np.isclose(k, mine["mass"] * bl.G * mine["length"] / (mine["b"] * mine["c"]))
+    try:
+        set_student("s001")
+        assert check("2.1", k).correct
+        set_student("s002")
+        assert not check("2.1", k).correct
+    finally:
+        set_student("")
+    assert check("2.1", RIGHT["2.1"]()).correct
+    lamp = task_numbers("1.1", "s001")
+    r_c = (lamp["mass"] * lamp["length"] + lamp["link_mass"] * lamp["length"] / 2) / lamp["counter_mass"]
+    assert core.check_data("1.1", {"num": repr(r_c)}, "s001").correct
+
+
+def _formats(v):
+    out = set()
+    for fmt in ("{:.2f}", "{:.3f}", "{:.4f}", "{:.4g}", "{:.5g}", "{}"):
+        out.add(fmt.format(v))
+    return {s for s in out if len(s.strip("-0.").replace(".", "")) >= 4}
+
+
+def test_no_expected_value_in_student_versions_or_check_sources():
+    """Every numeric expected value, in several formats, is absent from the hand-out and the checks' source."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    texts = {p.name: p.read_text(encoding="utf-8") for p in (root / "labs" / "student").glob("*.ipynb")}
+    texts.update({p.name: p.read_text(encoding="utf-8")
+                  for p in (root / "balancelab" / "course" / "check").glob("*.py")})
+    found = []
+    for t in tasks():
+        if t.kind != "numeric":
+            continue
+        right = RIGHT[t.id]()
+        values = right if isinstance(right, tuple) else (right,)
+        for v in values:
+            for s in _formats(float(v)):
+                for name, text in texts.items():
+                    found.extend([(t.id, s, name)] if s in text else [])
+    assert found == []

@@ -91,7 +91,9 @@ def test_malformed_crashing_and_unknown_notebooks_get_clear_rows(graded):
     assert rows["dave_lab2"]["status"] == "malformed" and rows["dave_lab2"]["total"] == "0"
     assert "not a valid notebook" in rows["dave_lab2"]["notes"]
     assert rows["erin_lab2"]["status"] in ("kernel died", "error")
-    assert rows["erin_lab2"]["total"] == "0"
+    # the answer given before the kernel died is graded; nothing after it
+    assert rows["erin_lab2"]["total"] == "1" and rows["erin_lab2"]["2.1"] == "1"
+    assert "kernel died" in rows["erin_lab2"]["notes"]
     assert rows["frank_notes"]["status"] == "unknown lab" and "--lab" in rows["frank_notes"]["notes"]
 
 
@@ -120,7 +122,7 @@ def test_csv_and_summary_from_rows(tmp_path):
             GradeRow("y", "", "malformed", notes="not a valid notebook")]
     p = write_csv(rows, tmp_path / "g.csv")
     text = p.read_text()
-    assert text.splitlines()[0] == "student,lab,status,total,max,2.1,2.2,notes"
+    assert text.splitlines()[0] == "student,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message"
     assert "x,lab2,graded,1,2,1,0," in text
     s = summary(rows)
     assert "1/2" in s and "y: malformed" in s

@@ -1,102 +1,110 @@
-"""Grade a folder of submitted lab notebooks in one command.
+"""Grade a folder of submitted lab notebooks in one command, with grades the student cannot fake.
 
 ::
 
-    python -m balancelab.course.grading submissions/ --out grades.csv
+    python -m balancelab.course.grading submissions/ --out grades.csv --jobs 2
+    python -m balancelab.course.grading submissions/ --shard 1/4 --out part1.csv   # on machine 1 of 4
+    python -m balancelab.course.grading merge part*.csv --out grades.csv
 
-Every ``*.ipynb`` under the folder is graded in its own worker process: the notebook is
-copied to a scratch folder (the submission is never modified), executed top to bottom in a
-fresh kernel with a per-cell time limit (a cell that loops is interrupted and execution goes
-on), and then every task of its lab is checked (:func:`balancelab.course.check.check`) on the
-variable that holds the task's answer. Failing cells cost nothing by themselves: a task
-scores when its answer variable exists and its check passes.
+Each ``*.ipynb`` under the folder is graded in two halves:
 
-The result is one row per notebook (``student`` = path relative to the folder, without
-``.ipynb``): lab, status, total, the score of each task and notes. A notebook that is not
-valid JSON, crashes its kernel, loops past the whole-notebook limit or belongs to no known
-lab gets a row with a clear status and zero points, and never stops the batch. The table is
-written as CSV and printed as a summary.
+1. **untrusted**: the notebook is copied to a fresh scratch folder and run by
+   :mod:`balancelab.course.runner` inside the sandbox (:mod:`balancelab.course.sandbox`:
+   bubblewrap, writes only to the scratch folder, no network, the whole process group killed
+   at the limits), which exports every answer variable as plain data (numbers, strings, sympy
+   ``srepr``, a design as its joints, loads and springs) after every cell;
+2. **trusted**: this process, which imported the grader's own ``balancelab``, decodes that
+   data without evaluating code and runs each task's judge on it
+   (:func:`~balancelab.course.check.check_data`, the same judge the student's ``check(...)``
+   runs); designs are rebuilt on the task's own mechanism and their balance recomputed here.
+
+Nothing else of the student's kernel reaches the grade: a patched ``check``, a forged verdict
+or a ``Design`` subclass with a faked report changes nothing. A score never exceeds the
+task's points. The submission is never modified.
+
+The result is one row per notebook: lab, status, total, max, the score of each task, notes,
+the lab mismatch flag and each task's verdict message. A notebook that is not valid JSON,
+crashes its kernel, loops or belongs to no known lab gets a row with a clear status (the lab
+and maximum kept whenever the lab is known) and never stops the batch.
 """
 from __future__ import annotations
 
 import argparse
-import csv
+import ast
 import json
 import os
 import re
-import subprocess
+import shutil
 import sys
 import tempfile
-from dataclasses import dataclass, field
+import time
+import warnings
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from . import check as _check
+from .gradetable import GradeRow, merge_csv, read_csv, summary, write_csv
+from .runner import ANSWERS_FILE, RESULT_MARK
+from .sandbox import NO_SANDBOX_WARNING, run_limited, sandbox_available
 
-__all__ = ["GradeRow", "grade_namespace", "grade_notebook", "grade_folder", "write_csv",
-           "summary", "main"]
-
-RESULT_MARK = "BALANCELAB-GRADE-RESULT "
+__all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook", "grade_folder",
+           "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
 
 
-@dataclass
-class GradeRow:
-    """The grade of one submitted notebook.
+STUDENT_VARIABLE = "STUDENT_ID"
 
-    Attributes
+
+def grade_answers(answers: dict, lab: str, student: str = "") -> dict:
+    """Check every task of ``lab`` on exported answer data (variable -> encoded value).
+
+    Parameters
     ----------
-    student : str
-        Submission name (path relative to the graded folder, no suffix).
+    answers : dict
+        Variable name -> data from :func:`~balancelab.course.check.data.encode_answer`.
     lab : str
-        ``"lab1"`` ... or ``""`` when unknown.
-    status : str
-        ``"graded"``, ``"malformed"``, ``"unknown lab"``, ``"timeout"``, ``"kernel died"`` or
-        ``"error"``.
-    scores : dict
-        Task id -> points earned.
-    points : dict
-        Task id -> points possible.
-    notes : str
-        Cells that failed or were interrupted, or what went wrong.
+        E.g. ``"lab2"``.
+    student : str
+        The student whose personal numbers the tasks that have them are judged with (``""``:
+        the published numbers).
+
+    Returns
+    -------
+    dict
+        Task id -> ``{"score", "points", "correct", "message"}``; a score is at most the
+        task's points.
 
     Examples
     --------
-    >>> row = GradeRow("alice", "lab2", "graded", {"2.1": 1.0, "2.4": 0.0}, {"2.1": 1.0, "2.4": 2.0})
-    >>> row.total, row.max_total
-    (1.0, 3.0)
+    >>> r = grade_answers({"k_lamp": {"num": "196.2"}}, "lab2")
+    >>> r["2.1"]["score"], r["2.2"]["message"]
+    (1.0, 'no answer: variable `lever_conditions` is not defined')
     """
-
-    student: str
-    lab: str
-    status: str
-    scores: dict = field(default_factory=dict)
-    points: dict = field(default_factory=dict)
-    notes: str = ""
-
-    @property
-    def total(self) -> float:
-        return float(sum(self.scores.values()))
-
-    @property
-    def max_total(self) -> float:
-        return float(sum(self.points.values()))
+    out = {}
+    for t in _check.tasks(lab):
+        if not isinstance(answers, dict) or t.variable not in answers:
+            out[t.id] = dict(score=0.0, points=float(t.points), correct=False,
+                             message=f"no answer: variable `{t.variable}` is not defined")
+            continue
+        v = _check.check_data(t.id, answers[t.variable], student)
+        score = min(max(float(v.score), 0.0), float(t.points)) if v.correct else 0.0
+        out[t.id] = dict(score=score, points=float(t.points), correct=bool(v.correct), message=v.message)
+    return out
 
 
 def grade_namespace(namespace: dict, lab: str) -> dict:
-    """Check every task of ``lab`` against the answer variables of a notebook's namespace.
-
-    Runs inside the graded kernel (the grader appends a cell calling it).
+    """Check every task of ``lab`` against the answer variables of a namespace (formative use).
 
     Parameters
     ----------
     namespace : dict
-        The notebook's ``globals()``.
+        E.g. a notebook's ``globals()``.
     lab : str
         E.g. ``"lab2"``.
 
     Returns
     -------
     dict
-        Task id -> ``{"score", "points", "correct", "message"}``.
+        As :func:`grade_answers` (the answers are encoded first, as the grader does).
 
     Examples
     --------
@@ -104,83 +112,176 @@ def grade_namespace(namespace: dict, lab: str) -> dict:
     >>> r["2.1"]["score"], r["2.2"]["message"]
     (1.0, 'no answer: variable `lever_conditions` is not defined')
     """
-    out = {}
-    for t in _check.tasks(lab):
-        if t.variable not in namespace:
-            out[t.id] = dict(score=0.0, points=t.points, correct=False,
-                             message=f"no answer: variable `{t.variable}` is not defined")
-            continue
-        v = _check.check(t.id, namespace[t.variable])
-        out[t.id] = dict(score=float(v.score), points=float(t.points), correct=v.correct,
-                         message=v.message)
-    return out
+    from .check.data import encode_answer
+
+    variables = {t.variable for t in _check.tasks(lab)}
+    sid = namespace.get(STUDENT_VARIABLE, "")
+    return grade_answers({v: encode_answer(namespace[v]) for v in variables if v in namespace}, lab,
+                         sid if isinstance(sid, str) else "")
 
 
-def _lab_of(nb, path: Path, lab: str | None) -> str | None:
-    if lab:
-        return lab if str(lab).startswith("lab") else f"lab{lab}"
-    meta = nb.get("metadata", {}).get("balancelab", {})
-    if isinstance(meta, dict) and meta.get("lab"):
-        return str(meta["lab"])
+def _norm_lab(lab) -> str | None:
+    if lab is None or str(lab).strip() == "":
+        return None
+    lab = str(lab).strip()
+    return lab if lab.startswith("lab") else f"lab{lab}"
+
+
+def resolve_lab(nb: dict, path: Path, lab: str | None = None) -> tuple[str | None, str]:
+    """The lab of a notebook and what disagrees about it.
+
+    ``--lab`` wins, then the notebook's ``balancelab.lab`` metadata, then ``labN`` in the
+    file name; every source that names another lab is reported.
+
+    Parameters
+    ----------
+    nb : dict
+        The notebook.
+    path : Path
+        Its file.
+    lab : str, optional
+        The lab forced on the command line.
+
+    Returns
+    -------
+    (str or None, str)
+        The lab (None if unknown) and the mismatch text (empty if all sources agree).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> resolve_lab({"metadata": {"balancelab": {"lab": "lab5"}}}, Path("ann_lab1.ipynb"))
+    ('lab5', 'file name says lab1, metadata says lab5')
+    """
+    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
+    from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
     m = re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE)
-    return f"lab{m.group(1)}" if m else None
+    from_name = f"lab{m.group(1)}" if m else None
+    forced = _norm_lab(lab)
+    sources = [("file name", from_name), ("metadata", from_meta), ("--lab", forced)]
+    named = {v for _, v in sources if v}
+    mismatch = ", ".join(f"{k} says {v}" for k, v in sources if v) if len(named) > 1 else ""
+    return forced or from_meta or from_name, mismatch
 
 
-def _worker(path: Path, lab: str | None, cell_timeout: int) -> dict:
-    """Execute one notebook (a copy) and grade it; returns a JSON-able dict."""
+_PATCH_NAMES = {"check", "check_data", "grade_answers", "grade_namespace", "balance_report", "judge", "Verdict"}
+
+
+def _cheat_notes(nb) -> list[str]:
+    """What the notebook's code replaces that the grader ignores anyway (reported, never trusted)."""
+    found = set()
+    for cell in nb.get("cells", []):
+        if cell.get("cell_type") != "code":
+            continue
+        src = cell.get("source", "")
+        src = src if isinstance(src, str) else "".join(src)
+        try:
+            tree = ast.parse("\n".join(ln for ln in src.splitlines() if not ln.lstrip().startswith(("%", "!"))))
+        except SyntaxError:
+            continue
+        for node in ast.walk(tree):
+            targets = (node.targets if isinstance(node, ast.Assign) else [node.target]
+                       if isinstance(node, (ast.AugAssign, ast.AnnAssign)) else [])
+            for t in targets:
+                name = t.id if isinstance(t, ast.Name) else t.attr if isinstance(t, ast.Attribute) else None
+                if name in _PATCH_NAMES:
+                    found.add(f"replaces `{name}`")
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name in _PATCH_NAMES:
+                found.add(f"redefines `{node.name}`")
+            if isinstance(node, ast.ClassDef) and any("Design" in ast.unparse(b) or "Verdict" in ast.unparse(b)
+                                                      for b in node.bases):
+                found.add(f"subclasses {', '.join(ast.unparse(b) for b in node.bases)}")
+    if not found:
+        return []
+    return [f"the notebook {', '.join(sorted(found))}: ignored (the grader checks the exported answers itself)"]
+
+
+def _read_notebook(path: Path):
     import nbformat
-    from nbclient import NotebookClient
-    from nbclient.exceptions import CellTimeoutError, DeadKernelError
 
     try:
         nb = nbformat.read(path, as_version=4)
         nbformat.validate(nb)
+        return nb, ""
     except Exception as e:  # not JSON, not a notebook, wrong schema
-        return dict(status="malformed", lab=lab or "", notes=f"not a valid notebook: {type(e).__name__}: "
-                    f"{str(e).splitlines()[0][:120] if str(e) else ''}")
-    lab = _lab_of(nb, path, lab)
-    known = {t.lab for t in _check.tasks()}
-    if lab not in known:
-        return dict(status="unknown lab", lab=lab or "",
-                    notes="cannot tell which lab this is (no balancelab.lab metadata, no 'labN' in the "
-                          "file name); pass --lab")
-    nb.cells.append(nbformat.v4.new_code_cell(
-        "import json as _bl_json, balancelab.course.grading as _bl_grading\n"
-        f"print({RESULT_MARK!r} + _bl_json.dumps(_bl_grading.grade_namespace(globals(), {lab!r})))"))
-    notes = []
-    status = "graded"
-    with tempfile.TemporaryDirectory(prefix="balancelab-grade-") as tmp:
-        client = NotebookClient(nb, timeout=cell_timeout, kernel_name="python3", allow_errors=True,
-                                interrupt_on_timeout=True, resources={"metadata": {"path": tmp}})
-        try:
-            client.execute()
-        except CellTimeoutError:
-            status = "timeout"
-            notes.append(f"a cell ran longer than {cell_timeout} s and could not be interrupted")
-        except DeadKernelError:
-            status = "kernel died"
-            notes.append("the kernel died while running the notebook")
-        except Exception as e:
-            status = "error"
-            notes.append(f"execution failed: {type(e).__name__}: {str(e)[:120]}")
-    result = None
-    for i, cell in enumerate(nb.cells[:-1]):
-        for o in cell.get("outputs", []):
-            if o.get("output_type") == "error":
-                notes.append(f"cell {i}: {o.get('ename')}")
-    for o in nb.cells[-1].get("outputs", []):
-        if o.get("output_type") == "stream" and RESULT_MARK in o.get("text", ""):
-            line = o["text"].split(RESULT_MARK, 1)[1].splitlines()[0]
-            result = json.loads(line)
-    if result is None and status == "graded":
-        status = "error"
-        notes.append("the tasks could not be checked (the grading cell did not run)")
-    return dict(status=status, lab=lab, results=result or {}, notes="; ".join(notes))
+        first = str(e).splitlines()[0][:120] if str(e) else ""
+        return None, f"not a valid notebook: {type(e).__name__}: {first}"
+
+
+def _run(path: Path, lab: str, cell_timeout: int, notebook_timeout: int, sandbox: bool | None):
+    """Run the notebook in the sandbox; ``(status, answers, notes)`` (answers are untrusted data)."""
+    variables = [t.variable for t in _check.tasks(lab)] + [STUDENT_VARIABLE]
+    root = os.environ.get("BALANCELAB_SCRATCH") or None
+    scratch = Path(tempfile.mkdtemp(prefix="balancelab-grade-", dir=root))
+    try:
+        copy = scratch / "submission.ipynb"
+        shutil.copyfile(path, copy)
+        env = {**os.environ, "PYTHONUNBUFFERED": "1", "HOME": str(scratch),
+               "JUPYTER_RUNTIME_DIR": str(scratch / ".runtime"), "IPYTHONDIR": str(scratch / ".ipython"),
+               "MPLCONFIGDIR": str(scratch / ".mpl"), "MPLBACKEND": "Agg"}
+        cmd = [sys.executable, "-m", "balancelab.course.runner", str(copy), "--vars", ",".join(variables),
+               "--cell-timeout", str(cell_timeout)]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            res = run_limited(cmd, scratch, notebook_timeout, env=env, sandbox=sandbox)
+        notes = [] if res.sandboxed else ["NO SANDBOX (bubblewrap missing): ran with resource limits only"]
+        data = None
+        for line in res.stdout.splitlines():
+            if line.startswith(RESULT_MARK):
+                try:
+                    data = json.loads(line[len(RESULT_MARK):])
+                except ValueError:
+                    data = None
+        saved = _saved_answers(scratch / ANSWERS_FILE)
+        if res.timed_out:
+            return "timeout", saved, notes + [f"the notebook ran longer than {notebook_timeout} s in total and "
+                                              "was killed; the answers given before are graded"]
+        if not isinstance(data, dict):
+            err = (res.stderr.strip().splitlines() or ["no output"])[-1][:200]
+            return "error", saved, notes + [f"the notebook could not be run: {err}"]
+        answers = data.get("answers") if isinstance(data.get("answers"), dict) else saved
+        notes += [str(x)[:300] for x in list(data.get("errors", []))[:50] + list(data.get("notes", []))[:10]]
+        status = data.get("status") if data.get("status") in ("graded", "timeout", "kernel died", "error") \
+            else "error"
+        return status, answers, notes
+    finally:
+        _remove(scratch)
+
+
+def _remove(folder: Path) -> None:
+    """Delete a scratch folder; a process of the sandbox that is still dying may write for a moment."""
+    for _ in range(50):
+        shutil.rmtree(folder, ignore_errors=True)
+        if not folder.exists():
+            return
+        time.sleep(0.1)
+    print(f"WARNING: could not delete the scratch folder {folder}", file=sys.stderr, flush=True)
+
+
+def _saved_answers(path: Path) -> dict:
+    try:
+        data = json.loads(path.read_text(encoding="utf-8")[:10 ** 7])
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def _student_id(answers: dict, name: str) -> tuple[str, list[str]]:
+    """The ``STUDENT_ID`` a notebook declares (for personal numbers) and a note if the file disagrees."""
+    from .check.data import decode_answer
+
+    sid = decode_answer(answers.get(STUDENT_VARIABLE, {"str": ""})) if isinstance(answers, dict) else ""
+    sid = sid.strip() if isinstance(sid, str) else ""
+    if sid and sid.lower() not in name.lower():
+        return sid, [f"STUDENT_ID {sid!r} does not appear in the submission's name {name!r}: personal "
+                     "numbers graded as declared, check who handed this in"]
+    return sid, []
 
 
 def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
-                   notebook_timeout: int = 600, student: str | None = None) -> GradeRow:
-    """Grade one submitted notebook in a separate process.
+                   notebook_timeout: int = 600, student: str | None = None,
+                   sandbox: bool | None = None) -> GradeRow:
+    """Grade one submitted notebook: run it in the sandbox, check its exported answers here.
 
     Parameters
     ----------
@@ -188,13 +289,15 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
         The submission (read only).
     lab : str, optional
         Force the lab (``"lab2"`` or ``"2"``); otherwise read from the notebook's
-        ``balancelab.lab`` metadata or a ``labN`` in its file name.
+        ``balancelab.lab`` metadata or a ``labN`` in its file name. Disagreements are flagged.
     cell_timeout : int
-        Per-cell time limit (s); a looping cell is interrupted.
+        Per-cell limit (s); a looping cell is interrupted, one that ignores the interrupt is killed.
     notebook_timeout : int
-        Limit for the whole notebook (s); past it the worker is killed.
+        Limit for the whole notebook (s); past it the sandbox is killed.
     student : str, optional
         Name for the row (default: the file name without suffix).
+    sandbox : bool, optional
+        Force the sandbox on or off (default: on when bubblewrap works).
 
     Returns
     -------
@@ -202,59 +305,92 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
 
     Examples
     --------
-    A file that is not a notebook gets a clear row (no kernel is started for it):
+    A file that is not a notebook gets a clear row (nothing is run for it):
 
     >>> import pathlib, tempfile
     >>> bad = pathlib.Path(tempfile.mkdtemp()) / "bob_lab2.ipynb"
     >>> _ = bad.write_text("{not json")
     >>> row = grade_notebook(bad)
-    >>> row.status, row.total, row.notes.split(":")[0]
-    ('malformed', 0.0, 'not a valid notebook')
+    >>> row.status, row.total, row.max_total, row.notes.split(":")[0]
+    ('malformed', 0.0, 5.0, 'not a valid notebook')
     """
     path = Path(path)
     student = student or path.stem
-    cmd = [sys.executable, "-m", "balancelab.course.grading", "--worker", str(path),
-           "--cell-timeout", str(cell_timeout)]
-    if lab:
-        cmd += ["--lab", str(lab)]
-    tasks_of = lambda lb: {t.id: float(t.points) for t in _check.tasks(lb)} if lb else {}  # noqa: E731
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=notebook_timeout,
-                              env={**os.environ, "PYTHONUNBUFFERED": "1"})
-    except subprocess.TimeoutExpired:
-        lb = lab if lab is None or str(lab).startswith("lab") else f"lab{lab}"
-        return GradeRow(student, lb or "", "timeout", {t: 0.0 for t in tasks_of(lb)}, tasks_of(lb),
-                        f"the notebook ran longer than {notebook_timeout} s in total")
-    data = None
-    for line in proc.stdout.splitlines():
-        if line.startswith(RESULT_MARK):
-            data = json.loads(line[len(RESULT_MARK):])
-    if data is None:
-        err = (proc.stderr.strip().splitlines() or ["no output"])[-1][:200]
-        return GradeRow(student, lab or "", "error", notes=f"grader worker failed: {err}")
-    lb = data.get("lab", "")
-    results = data.get("results", {})
-    points = tasks_of(lb) if lb in {t.lab for t in _check.tasks()} else {}
-    scores = {tid: float(results.get(tid, {}).get("score", 0.0)) for tid in points}
-    return GradeRow(student, lb, data["status"], scores, points, data.get("notes", ""))
+    nb, problem = _read_notebook(path)
+    lb, mismatch = resolve_lab(nb or {}, path, lab)
+    known = {t.lab for t in _check.tasks()}
+    points = {t.id: float(t.points) for t in _check.tasks(lb)} if lb in known else {}
+    zero = {t: 0.0 for t in points}
+    if nb is None:
+        return GradeRow(student, lb if lb in known else "", "malformed", zero, points, problem, mismatch=mismatch)
+    if lb not in known:
+        return GradeRow(student, lb or "", "unknown lab", notes="cannot tell which lab this is (no balancelab.lab "
+                        "metadata, no 'labN' in the file name); pass --lab", mismatch=mismatch)
+    status, answers, notes = _run(path, lb, cell_timeout, notebook_timeout, sandbox)
+    sid, id_note = _student_id(answers, student)
+    results = grade_answers(answers, lb, sid)
+    notes = _cheat_notes(nb) + id_note + notes
+    if mismatch:
+        notes.insert(0, f"lab mismatch ({mismatch}): graded as {lb}")
+    messages = {tid: ("✔ " if r["correct"] else "✘ ") + r["message"] for tid, r in results.items()}
+    scores = {tid: results[tid]["score"] for tid in points}
+    return GradeRow(student, lb, status, scores, points, "; ".join(notes), messages, mismatch)
+
+
+def shard(files: list, spec: str | None) -> list:
+    """The files of shard ``i/n`` (1-based): every n-th file of the sorted list, starting at the i-th.
+
+    Parameters
+    ----------
+    files : list
+        All submissions, sorted.
+    spec : str or None
+        ``"i/n"`` with ``1 <= i <= n``; None for all files.
+
+    Returns
+    -------
+    list
+
+    Examples
+    --------
+    >>> shard(list("abcde"), "2/2")
+    ['b', 'd']
+    >>> shard(list("abc"), "3/2")
+    Traceback (most recent call last):
+    ...
+    ValueError: shard must be 'i/n' with 1 <= i <= n, got '3/2'
+    """
+    if spec is None:
+        return list(files)
+    m = re.fullmatch(r"\s*(\d+)\s*/\s*(\d+)\s*", str(spec))
+    if not m or not 1 <= int(m.group(1)) <= int(m.group(2)):
+        raise ValueError(f"shard must be 'i/n' with 1 <= i <= n, got {spec!r}")
+    i, n = int(m.group(1)), int(m.group(2))
+    return list(files)[i - 1::n]
 
 
 def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
-                 notebook_timeout: int = 600, progress: bool = False) -> list[GradeRow]:
+                 notebook_timeout: int = 600, progress: bool = False, jobs: int = 1,
+                 shard_spec: str | None = None, sandbox: bool | None = None) -> list[GradeRow]:
     """Grade every ``*.ipynb`` under ``folder`` (checkpoints skipped), one row each.
 
     Parameters
     ----------
     folder : str or Path
         Folder of submissions (searched recursively).
-    lab, cell_timeout, notebook_timeout
+    lab, cell_timeout, notebook_timeout, sandbox
         As in :func:`grade_notebook`.
     progress : bool
         Print one line per notebook as it is graded.
+    jobs : int
+        Notebooks graded at the same time (>= 1).
+    shard_spec : str, optional
+        ``"i/n"``: grade only that share of the folder (see :func:`shard`).
 
     Returns
     -------
     list of GradeRow
+        In file order.
 
     Raises
     ------
@@ -271,87 +407,38 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
     folder = Path(folder)
     if not folder.is_dir():
         raise FileNotFoundError(f"no such folder: {folder}")
-    files = sorted(p for p in folder.rglob("*.ipynb") if ".ipynb_checkpoints" not in p.parts)
-    rows = []
-    for p in files:
+    if not isinstance(jobs, int) or jobs < 1:
+        raise ValueError(f"jobs must be an integer >= 1, got {jobs!r}")
+    files = shard(sorted(p for p in folder.rglob("*.ipynb") if ".ipynb_checkpoints" not in p.parts), shard_spec)
+    if sandbox is None and not sandbox_available():
+        print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
+
+    def one(p):
         name = str(p.relative_to(folder).with_suffix(""))
         row = grade_notebook(p, lab=lab, cell_timeout=cell_timeout, notebook_timeout=notebook_timeout,
-                             student=name)
+                             student=name, sandbox=sandbox)
         if progress:
             print(f"graded {name}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
-        rows.append(row)
-    return rows
+        return row
+
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(one, files))
 
 
-def _task_columns(rows) -> list[str]:
-    order = [t.id for t in _check.tasks()]
-    used = {tid for r in rows for tid in r.points}
-    return [t for t in order if t in used]
-
-
-def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
-    """Write the grade table: student, lab, status, total, max, one column per task, notes.
-
-    Parameters
-    ----------
-    rows : list of GradeRow
-    path : str or Path
-
-    Returns
-    -------
-    Path
-
-    Examples
-    --------
-    >>> import pathlib, tempfile
-    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})]
-    >>> path = write_csv(rows, pathlib.Path(tempfile.mkdtemp()) / "grades.csv")
-    >>> path.read_text().splitlines()
-    ['student,lab,status,total,max,2.1,notes', 'alice,lab2,graded,1,1,1,']
-    """
-    path = Path(path)
-    cols = _task_columns(rows)
-    with path.open("w", newline="", encoding="utf-8") as f:
-        w = csv.writer(f)
-        w.writerow(["student", "lab", "status", "total", "max"] + cols + ["notes"])
-        for r in rows:
-            w.writerow([r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
-                       + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes])
-    return path
-
-
-def summary(rows: list[GradeRow]) -> str:
-    """A plain-text table of the grades (what the command prints).
-
-    Parameters
-    ----------
-    rows : list of GradeRow
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}),
-    ...         GradeRow("bob", "", "malformed", notes="not a valid notebook")]
-    >>> print("\\n".join(summary(rows).splitlines()[-2:]))
-    2 notebooks, 1 graded, 1 with problems
-      bob: malformed: not a valid notebook
-    """
-    cols = _task_columns(rows)
-    head = ["student", "lab", "status", "score"] + cols
-    body = [[r.student, r.lab, r.status, f"{r.total:g}/{r.max_total:g}"]
-            + [f"{r.scores[c]:g}" if c in r.scores else "-" for c in cols] for r in rows]
-    widths = [max(len(str(x)) for x in col) for col in zip(head, *body)] if body else [len(h) for h in head]
-    fmt = lambda cells: "  ".join(str(c).ljust(w) for c, w in zip(cells, widths))  # noqa: E731
-    lines = [fmt(head), fmt(["-" * w for w in widths])] + [fmt(b) for b in body]
-    graded = [r for r in rows if r.status == "graded"]
-    lines.append(f"{len(rows)} notebooks, {len(graded)} graded, {len(rows) - len(graded)} with problems")
-    for r in rows:
-        if r.status != "graded":
-            lines.append(f"  {r.student}: {r.status}: {r.notes}")
-    return "\n".join(lines)
+def _parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="python -m balancelab.course.grading",
+                                 description="Grade a folder of submitted balancelab lab notebooks "
+                                             "(or: merge A.csv B.csv ... --out all.csv).")
+    ap.add_argument("folder", nargs="*", help="folder of submitted notebooks (or 'merge' and CSV files)")
+    ap.add_argument("--out", default="grades.csv", help="CSV file to write (default grades.csv)")
+    ap.add_argument("--lab", default=None, help="force the lab (e.g. lab2); default: from each notebook")
+    ap.add_argument("--cell-timeout", type=int, default=60, help="per-cell time limit in s (default 60)")
+    ap.add_argument("--notebook-timeout", type=int, default=600,
+                    help="limit for a whole notebook in s (default 600)")
+    ap.add_argument("--jobs", type=int, default=1, help="notebooks graded in parallel (default 1)")
+    ap.add_argument("--shard", default=None, help="grade only share i of n of the folder, e.g. 2/8")
+    ap.add_argument("--no-sandbox", action="store_true", help="run without bubblewrap (trusted work only)")
+    return ap
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -365,33 +452,31 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        The exit status: 0 when the folder was graded, 2 when it does not exist.
+        The exit status: 0 when the folder was graded, 2 when it does not exist or an
+        argument is wrong.
 
     Examples
     --------
     >>> main(["no/such/folder"])  # prints "error: no such folder: ..." on stderr
     2
     """
-    ap = argparse.ArgumentParser(prog="python -m balancelab.course.grading",
-                                 description="Grade a folder of submitted balancelab lab notebooks.")
-    ap.add_argument("folder", nargs="?", help="folder of submitted notebooks")
-    ap.add_argument("--out", default="grades.csv", help="CSV file to write (default grades.csv)")
-    ap.add_argument("--lab", default=None, help="force the lab (e.g. lab2); default: from each notebook")
-    ap.add_argument("--cell-timeout", type=int, default=60, help="per-cell time limit in s (default 60)")
-    ap.add_argument("--notebook-timeout", type=int, default=600,
-                    help="limit for a whole notebook in s (default 600)")
-    ap.add_argument("--worker", default=None, help=argparse.SUPPRESS)
+    ap = _parser()
     args = ap.parse_args(argv)
-    if args.worker:
-        res = _worker(Path(args.worker), args.lab, args.cell_timeout)
-        print(RESULT_MARK + json.dumps(res), flush=True)
+    if args.folder[:1] == ["merge"]:
+        try:
+            merge_csv(args.folder[1:], args.out)
+        except (OSError, ValueError, KeyError) as e:
+            print(f"error: {e}", file=sys.stderr)
+            return 2
+        print(f"merged {len(args.folder) - 1} tables into {args.out}")
         return 0
-    if not args.folder:
-        ap.error("give the folder of submissions")
+    if len(args.folder) != 1:
+        ap.error("give one folder of submissions")
     try:
-        rows = grade_folder(args.folder, lab=args.lab, cell_timeout=args.cell_timeout,
-                            notebook_timeout=args.notebook_timeout, progress=True)
-    except FileNotFoundError as e:
+        rows = grade_folder(args.folder[0], lab=args.lab, cell_timeout=args.cell_timeout,
+                            notebook_timeout=args.notebook_timeout, progress=True, jobs=args.jobs,
+                            shard_spec=args.shard, sandbox=False if args.no_sandbox else None)
+    except (FileNotFoundError, ValueError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     write_csv(rows, args.out)

@@ -3,8 +3,10 @@
 A solution notebook marks what students must not see:
 
 * in a code cell, the lines between ``# BEGIN SOLUTION`` and ``# END SOLUTION`` (each
-  on a line of its own, any indentation) are replaced by one line
-  ``raise NotImplementedError("...")`` at the indentation of the ``BEGIN`` marker;
+  on a line of its own, any indentation) are replaced by one line: ``variable = ...`` when
+  the region is at the top level of a cell that checks one task (``check("n.m", variable)``),
+  so that Run All goes on past an unanswered task and its check says "No answer yet";
+  otherwise ``raise NotImplementedError("...")`` at the indentation of the ``BEGIN`` marker;
 * in a markdown cell, everything between ``<!-- BEGIN SOLUTION -->`` and
   ``<!-- END SOLUTION -->`` is removed (a cell left empty is dropped);
 * a cell tagged ``solution`` is dropped entirely.
@@ -15,17 +17,21 @@ every student version::
     python -m balancelab.course.labtools generate            # labs/solutions -> labs/student
     python -m balancelab.course.labtools check               # exit 1 if a student version is stale
     python -m balancelab.course.labtools execute             # re-run the solutions, store outputs
+    python -m balancelab.course.labtools handout OUT         # what students get (no solutions)
+    python -m balancelab.course.labtools autograder OUT      # what the instructor grades with
 """
 from __future__ import annotations
 
 import argparse
 import copy
+import hashlib
 import re
+import shutil
 import sys
 from pathlib import Path
 
-__all__ = ["PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
-           "stale", "execute_notebook", "main"]
+__all__ = ["PLACEHOLDER", "ANSWER_PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
+           "stale", "execute_notebook", "stable_widget_id", "handout", "autograder", "main"]
 
 CODE_BEGIN = re.compile(r"^(\s*)# BEGIN SOLUTION\s*$")
 CODE_END = re.compile(r"^\s*# END SOLUTION\s*$")
@@ -34,6 +40,9 @@ MD_END = "<!-- END SOLUTION -->"
 SOLUTION_TAG = "solution"
 #: The line that replaces a solution region in a code cell.
 PLACEHOLDER = 'raise NotImplementedError("your answer here: replace this line")'
+#: The line that replaces a top-level solution region in a cell that checks one task.
+ANSWER_PLACEHOLDER = "{variable} = ...  # your answer here: replace the ..."
+CHECK_CALL = re.compile(r"""^check\(["'][\d.]+["'],\s*(\w+)\)""", re.M)
 
 WIDGET_MIME = "application/vnd.jupyter.widget-view+json"
 #: What a stored widget output says where no widget manager can show it.
@@ -59,6 +68,7 @@ class MarkerError(ValueError):
 
 
 def _strip_code(src: str, where: str) -> tuple[str, list[str]]:
+    checked = CHECK_CALL.findall(src)
     out, removed, inside, indent = [], [], False, ""
     for n, line in enumerate(src.split("\n"), 1):
         m = CODE_BEGIN.match(line)
@@ -72,7 +82,8 @@ def _strip_code(src: str, where: str) -> tuple[str, list[str]]:
             if not inside:
                 raise MarkerError(f"{where}, line {n}: '# END SOLUTION' without a BEGIN")
             inside = False
-            out.append(indent + PLACEHOLDER)
+            one = len(checked) == 1 and indent == ""
+            out.append(ANSWER_PLACEHOLDER.format(variable=checked[0]) if one else indent + PLACEHOLDER)
             continue
         if inside:
             removed[-1] += line + "\n"
@@ -344,16 +355,164 @@ def execute_notebook(path: str | Path, timeout: int = 120, kernel_name: str = "p
     NotebookClient(nb, timeout=timeout, kernel_name=kernel_name, allow_errors=allow_errors,
                    resources={"metadata": {"path": str(path.parent)}},
                    store_widget_state=False).execute()
-    for cell in nb.cells:
+    for i, cell in enumerate(nb.cells):
         cell.get("metadata", {}).pop("execution", None)
-        for out in cell.get("outputs", []):
+        for j, out in enumerate(cell.get("outputs", [])):
             data = out.get("data", {})
             if WIDGET_MIME in data and "text/plain" in data:
                 # the widget's repr holds the rendered picture's bytes: keep the file small
                 data["text/plain"] = WIDGET_TEXT
+            if WIDGET_MIME in data and isinstance(data[WIDGET_MIME], dict):
+                # no widget state is stored, so the id names nothing: make it stable (no git diff per run)
+                data[WIDGET_MIME]["model_id"] = stable_widget_id(path.name, i, j)
     if write:
         nbformat.write(nb, path)
     return nb
+
+
+def stable_widget_id(name: str, cell: int, output: int) -> str:
+    """A widget model id that depends only on where the widget is shown (32 hex digits).
+
+    Parameters
+    ----------
+    name : str
+        The notebook's file name.
+    cell, output : int
+        Cell index and output index.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> stable_widget_id("lab1.ipynb", 3, 0) == stable_widget_id("lab1.ipynb", 3, 0)
+    True
+    >>> len(stable_widget_id("lab1.ipynb", 3, 0))
+    32
+    """
+    return hashlib.sha256(f"{name}:{cell}:{output}".encode()).hexdigest()[:32]
+
+
+_STUDENT_README = """# balancelab labs
+
+1. Install the course package and the lab tools (Python >= 3.10):
+   `pip install "./package[labs]"` (from this folder).
+2. Open a lab in JupyterLab: `jupyter lab labs/`.
+3. Every task ends in `check("n.m", answer)`: it says whether the answer is right and gives a
+   hint. `explain("n.m")` says what form an answer takes. Hand in the `.ipynb` file.
+"""
+
+
+def _copy_package(dst: Path) -> None:
+    """The library and its build files, without tests, labs, book or caches."""
+    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
+    shutil.copytree(_ROOT / "balancelab", dst / "balancelab", ignore=ignore)
+    for name in ("pyproject.toml", "LICENSE", "README.md", "constraints.txt"):
+        if (_ROOT / name).exists():
+            shutil.copy2(_ROOT / name, dst / name)
+
+
+def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
+    """Build the student hand-out in ``out``: student notebooks and the package, no solutions.
+
+    ``out/labs`` holds the student versions (generated now from ``src``), ``out/package`` the
+    library to install, ``out/README.md`` what to do. The hand-out is scanned afterwards:
+    no solution notebook, no solution region and no ``BEGIN SOLUTION`` marker may be in it.
+
+    Parameters
+    ----------
+    out : str or Path
+        A folder that does not exist yet (or is empty).
+    src : str or Path
+        The solution notebooks.
+
+    Returns
+    -------
+    Path
+
+    Raises
+    ------
+    FileExistsError
+        If ``out`` exists and is not empty.
+    RuntimeError
+        If solution text is found in the hand-out.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> out = handout(pathlib.Path(tempfile.mkdtemp()) / "handout")
+    >>> sorted(p.name for p in out.iterdir())
+    ['README.md', 'labs', 'package']
+    """
+    out = Path(out)
+    if out.exists() and any(out.iterdir()):
+        raise FileExistsError(f"{out} exists and is not empty")
+    generate(src, out / "labs")
+    _copy_package(out / "package")
+    (out / "README.md").write_text(_STUDENT_README, encoding="utf-8")
+    _scan_handout(out, src)
+    return out
+
+
+def _scan_handout(out: Path, src) -> None:
+    import nbformat
+
+    regions = [line.strip() for s in sorted(Path(src).glob("*.ipynb"))
+               for text in solution_texts(nbformat.read(s, as_version=4), s.name) for line in text.splitlines()
+               if len(line.strip()) >= 12]
+    for f in out.rglob("*"):
+        if f.suffix not in (".ipynb", ".py", ".md"):
+            continue
+        text = f.read_text(encoding="utf-8", errors="replace")
+        if f.suffix == ".ipynb" and ("BEGIN SOLUTION" in text or '"solution"' in text):
+            raise RuntimeError(f"solution marker left in {f}")
+        leaked = [r for r in regions if r in text] if f.suffix == ".ipynb" else []
+        if leaked:
+            raise RuntimeError(f"solution text in {f}: {leaked[0]!r}")
+
+
+def autograder(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
+    """Build the instructor's autograder in ``out``: solutions, the package and how to grade.
+
+    Parameters
+    ----------
+    out : str or Path
+        A folder that does not exist yet (or is empty).
+    src : str or Path
+        The solution notebooks.
+
+    Returns
+    -------
+    Path
+
+    Raises
+    ------
+    FileExistsError
+        If ``out`` exists and is not empty.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> out = autograder(pathlib.Path(tempfile.mkdtemp()) / "autograder")
+    >>> sorted(p.name for p in out.iterdir())
+    ['README.md', 'package', 'solutions']
+    """
+    out = Path(out)
+    if out.exists() and any(out.iterdir()):
+        raise FileExistsError(f"{out} exists and is not empty")
+    (out / "solutions").mkdir(parents=True)
+    for f in sorted(Path(src).glob("*.ipynb")):
+        shutil.copy2(f, out / "solutions" / f.name)
+    _copy_package(out / "package")
+    (out / "README.md").write_text(
+        "# balancelab autograder (instructors only: contains the solutions)\n\n"
+        "1. `pip install \"./package[labs]\"` and, on Debian, `apt-get install bubblewrap` (the sandbox).\n"
+        "2. Collect the submitted `.ipynb` files in `submissions/`.\n"
+        "3. `python -m balancelab.course.grading submissions/ --out grades.csv --jobs 2`\n"
+        "   (on several machines: `--shard i/n`, then `python -m balancelab.course.grading merge "
+        "part*.csv --out grades.csv`).\n", encoding="utf-8")
+    return out
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -379,10 +538,11 @@ def main(argv: list[str] | None = None) -> int:
     """
     ap = argparse.ArgumentParser(prog="python -m balancelab.course.labtools",
                                  description="Generate student versions of the lab notebooks.")
-    ap.add_argument("command", choices=("generate", "check", "execute"))
+    ap.add_argument("command", choices=("generate", "check", "execute", "handout", "autograder"))
     ap.add_argument("--solutions", default=str(DEFAULT_SOLUTIONS), help="solution notebooks folder")
     ap.add_argument("--student", default=str(DEFAULT_STUDENT), help="student versions folder")
-    ap.add_argument("notebooks", nargs="*", help="for execute: the notebooks (default: all solutions)")
+    ap.add_argument("notebooks", nargs="*", help="for execute: the notebooks (default: all solutions); "
+                    "for handout and autograder: the output folder")
     args = ap.parse_args(argv)
     try:
         if args.command == "generate":
@@ -395,12 +555,17 @@ def main(argv: list[str] | None = None) -> int:
             if bad:
                 return 1
             print("every student version is up to date")
+        elif args.command in ("handout", "autograder"):
+            if len(args.notebooks) != 1:
+                ap.error(f"{args.command} needs one output folder")
+            made = (handout if args.command == "handout" else autograder)(args.notebooks[0], args.solutions)
+            print(f"wrote {made}")
         else:
             paths = args.notebooks or sorted(str(p) for p in Path(args.solutions).glob("*.ipynb"))
             for p in paths:
                 execute_notebook(p)
                 print(f"executed {p}")
-    except (MarkerError, FileNotFoundError) as e:
+    except (MarkerError, FileNotFoundError, FileExistsError, RuntimeError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     return 0

@@ -27,13 +27,15 @@ like), built from the helpers of ``answers``; a new lab gets a new module import
 Examples
 --------
 >>> from balancelab.course.check import check
->>> print(check("2.1", "196.2 N/m"))
-Task 2.1: ✔ correct. Within 0.5 % of the expected value.
+>>> print(check("1.2", "(m*r + m_l*r/2)/m_c"))
+Task 1.2: ✔ correct. Your r_c is equivalent to the expected one.
 """
 from .answers import (DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, point, quantity,
                       symbolic, vector)
 # importing a lab module registers its tasks
-from .core import AnswerError, Task, Verdict, check, explain, lab_tasks, register_task, tasks
+from .core import (AnswerError, Task, Verdict, check, check_data, explain, lab_tasks, register_task, set_student,
+                   task_numbers, tasks)
+from .data import DesignData, decode_answer, encode_answer
 from .lab1 import LAB1_FOURBAR, LAMP_ARM, lab1_fourbar
 from .lab2 import LAB2_LEVER, LACOSTE, LAMP_SPRING, lab2_lever
 from .lab3 import LAB3_LEVER, PARTNER_SPRINGS, lab3_torque_error
@@ -41,7 +43,7 @@ from .lab4 import LAB4_PARALLELOGRAM, LAB4_SINGH, lab4_singh_arm
 from .lab5 import LAB5_TECHNIQUE2, lab5_technique2
 from .lab6 import LAB6_BOARD, LAB6_SCISSORS, lab6_scissors
 
-__all__ = ["Verdict", "Task", "check", "tasks", "lab_tasks", "explain", "AnswerError", "register_task",
+__all__ = ["Verdict", "Task", "check", "check_data", "set_student", "task_numbers", "encode_answer", "decode_answer", "DesignData", "tasks", "lab_tasks", "explain", "AnswerError", "register_task",
            "lab1_fourbar", "lab2_lever", "lab3_torque_error", "lab4_singh_arm", "lab5_technique2",
            "lab6_scissors", "quantity", "vector", "point", "numeric", "numeric_vector", "symbolic",
            "as_mapping", "DESIGN_TOLERANCE", "design_balanced",

@@ -224,9 +224,23 @@ def _compare(value: float, expected: float, rtol: float, unit: str) -> tuple[boo
                 hint = "Your answer is " + why
                 break
         if not hint:
-            hint = (f"Your answer is too {'large' if ratio > 1 else 'small'} "
-                    f"(outside the {tol} tolerance). Recheck each step and its units.")
+            hint = _band(abs(ratio - 1)) + " Recheck each step and its units."
     return False, f"Not within {tol} of the expected value.", hint
+
+
+#: Bands of the relative error a hint may name: wide enough, and without a direction, so that
+#: the hints cannot be used to bisect towards the expected value.
+ERROR_BANDS = ((0.05, "less than 5 %"), (0.5, "5 % to 50 %"), (float("inf"), "more than 50 %"))
+
+
+def _band(error: float) -> str:
+    """The error band of a relative error, without its direction.
+
+    >>> _band(0.2)
+    'Your answer is off by 5 % to 50 % (too large or too small: the hint does not say).'
+    """
+    text = next(t for limit, t in ERROR_BANDS if error < limit)
+    return f"Your answer is off by {text} (too large or too small: the hint does not say)."
 
 
 def numeric(answer, expected: float, dimension: str, rtol: float = 5e-3) -> tuple[bool, str, str]:
@@ -308,7 +322,8 @@ def numeric_vector(answer, expected, dimension: str, rtol: float = 5e-3,
     return False, f"{', '.join(bad)} not within {rtol * 100:g} %.", hint
 
 
-def symbolic(answer, expected, names: str, what: str = "the expression") -> tuple[bool, str, str]:
+def symbolic(answer, expected, names: str, what: str = "the expression",
+             signed: str = "") -> tuple[bool, str, str]:
     """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
 
     Symbols are matched by name, whatever their assumptions. The difference must simplify
@@ -326,6 +341,9 @@ def symbolic(answer, expected, names: str, what: str = "the expression") -> tupl
         The allowed symbol names, separated by spaces.
     what : str
         How to name the answer in messages.
+    signed : str
+        Names (among ``names``) that may be negative: real symbols, sampled in
+        ``[-2, -0.3] U [0.3, 2]`` by the spot check; the others are positive.
 
     Returns
     -------
@@ -346,7 +364,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression") -> tupl
     """
     import sympy as sp
 
-    allowed = {n: sp.Symbol(n, positive=True) for n in names.split()}
+    sign = set(signed.split())
+    allowed = {n: sp.Symbol(n, real=True) if n in sign else sp.Symbol(n, positive=True) for n in names.split()}
     hint = f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
     if isinstance(answer, (str,)):
         try:
@@ -380,6 +399,7 @@ def symbolic(answer, expected, names: str, what: str = "the expression") -> tupl
     same = True
     for _ in range(6):
         vals = rng.uniform(0.3, 2.0, len(syms))
+        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(vals, syms)]
         a, e = complex(f_a(*vals)), complex(f_e(*vals))
         if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
             same = False

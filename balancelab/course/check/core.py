@@ -10,7 +10,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-__all__ = ["Verdict", "AnswerError", "Task", "register_task", "tasks", "lab_tasks", "explain", "check"]
+from .data import Unreadable, decode_answer, encode_answer
+
+__all__ = ["Verdict", "AnswerError", "Task", "register_task", "tasks", "lab_tasks", "explain", "check", "check_data", "set_student",
+           "task_numbers"]
 
 
 @dataclass(frozen=True)
@@ -104,6 +107,10 @@ class Task:
         ``judge(answer) -> (correct, message, hint)``; may raise :class:`AnswerError`.
     points : float
         Points the task is worth.
+    numbers : callable, optional
+        For a task with personal numbers: ``numbers(rng)`` draws a student's numbers (a dict)
+        from a seeded generator, ``numbers(None)`` gives the published ones; the judge is
+        then called as ``judge(answer, numbers)``.
 
     Examples
     --------
@@ -120,13 +127,14 @@ class Task:
     expects: str
     judge: Callable[[Any], tuple[bool, str, str]] = field(repr=False, compare=False)
     points: float = 1.0
+    numbers: Callable | None = field(default=None, repr=False, compare=False)
 
 
 _TASKS: dict[str, Task] = {}
 
 
 def register_task(id: str, title: str, variable: str, kind: str, expects: str,
-                  points: float = 1.0) -> Callable:
+                  points: float = 1.0, numbers: Callable | None = None) -> Callable:
     """Decorator declaring a task: the decorated function is its judge.
 
     A judge takes the student's answer and returns ``(correct, message, hint)`` (the
@@ -136,7 +144,7 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
     ----------
     id : str
         ``"<lab>.<n>"``, e.g. ``"2.4"``; registering an id again replaces the task.
-    title, variable, kind, expects, points
+    title, variable, kind, expects, points, numbers
         As in :class:`Task`.
 
     Returns
@@ -157,7 +165,7 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
         raise ValueError(f"kind must be 'numeric', 'symbolic' or 'design', got {kind!r}")
 
     def register(fn):
-        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points)
+        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points, numbers)
         return fn
 
     return register
@@ -189,6 +197,65 @@ def tasks(lab: str | int | None = None) -> list[Task]:
 
 
 lab_tasks = tasks
+
+
+_STUDENT = {"id": ""}
+
+
+def set_student(student_id: str) -> None:
+    """Set the student whose personal numbers :func:`task_numbers` and :func:`check` use.
+
+    Parameters
+    ----------
+    student_id : str
+        The id the instructor gave (as in the submission's file name); ``""`` for the
+        published numbers.
+
+    Examples
+    --------
+    >>> set_student("")
+    >>> task_numbers("2.1")["mass"]
+    1.5
+    """
+    if not isinstance(student_id, str):
+        raise TypeError(f"student_id must be a string, got {type(student_id).__name__}")
+    _STUDENT["id"] = student_id.strip()
+
+
+def task_numbers(task_id: str, student: str | None = None) -> dict:
+    """The numbers of a task: the published ones, or a student's personal ones (seeded by the id).
+
+    Parameters
+    ----------
+    task_id : str
+        E.g. ``"2.1"``.
+    student : str, optional
+        The student id; the one of :func:`set_student` by default. ``""``: published numbers.
+
+    Returns
+    -------
+    dict
+        Empty for a task without numbers of its own.
+
+    Examples
+    --------
+    >>> task_numbers("2.1", "") == task_numbers("2.1", "")
+    True
+    >>> task_numbers("2.1", "s1234") == task_numbers("2.1", "s1234") != task_numbers("2.1", "s9876")
+    True
+    """
+    import hashlib
+
+    import numpy as np
+
+    t = _TASKS.get(str(task_id))
+    if t is None or t.numbers is None:
+        return {}
+    student = _STUDENT["id"] if student is None else str(student).strip()
+    if not student:
+        return dict(t.numbers(None))
+    seed = int.from_bytes(hashlib.sha256(f"balancelab:{t.id}:{student}".encode()).digest()[:8], "big")
+    return dict(t.numbers(np.random.default_rng(seed)))
 
 
 def explain(task_id: str) -> str:
@@ -238,15 +305,56 @@ def check(task_id: str, answer: Any) -> Verdict:
     Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
       Hint: Store a plain number in m or a string such as '2.5 m'.
     """
+    return check_data(task_id, encode_answer(answer))
+
+
+def check_data(task_id: str, data: Any, student: str | None = None) -> Verdict:
+    """Check an answer given as plain data (:func:`~.data.encode_answer`): what the grader does.
+
+    :func:`check` is ``check_data(task_id, encode_answer(answer))``, so the formative check in
+    the notebook and the trusted grader run the same judge on the same data. The score is
+    never more than the task's points.
+
+    Parameters
+    ----------
+    task_id : str
+        The task, e.g. ``"2.1"``.
+    data : dict
+        The encoded answer (e.g. read from the JSON a notebook exported).
+    student : str, optional
+        Whose personal numbers to judge with (:func:`task_numbers`).
+
+    Returns
+    -------
+    Verdict
+
+    Examples
+    --------
+    >>> check_data("2.1", {"str": "12 N/m"}).message
+    'Not within 0.5 % of the expected value.'
+    >>> check_data("2.1", {"other": "Verdict"}).message
+    'Your answer is a Verdict, which cannot be graded: store the answer itself.'
+    """
     t = _TASKS.get(str(task_id))
     if t is None:
         return Verdict(str(task_id), False, f"There is no task {task_id!r}.",
                        f"Tasks are: {', '.join(t.id for t in tasks())}.", 0.0, 0.0)
+    answer = decode_answer(data)
+    if answer is Ellipsis:
+        return Verdict(t.id, False, "No answer yet.", f"Replace the `...` in `{t.variable} = ...`: {t.expects}.",
+                       0.0, t.points)
+    if isinstance(answer, Unreadable):
+        return Verdict(t.id, False, f"Your answer is {_article(answer.what)}, which cannot be graded: "
+                       "store the answer itself.", t.expects, 0.0, t.points)
     try:
-        ok, message, hint = t.judge(answer)
+        ok, message, hint = t.judge(answer, task_numbers(t.id, student)) if t.numbers else t.judge(answer)
     except AnswerError as e:
         ok, message, hint = False, str(e), e.hint or t.expects
     except Exception as e:  # a check must never crash the student's notebook
         ok, message, hint = (False, f"Your answer could not be checked ({type(e).__name__}).",
                              t.expects)
-    return Verdict(t.id, bool(ok), message, hint, t.points if ok else 0.0, t.points)
+    return Verdict(t.id, bool(ok), message, hint, float(t.points) if bool(ok) else 0.0, float(t.points))
+
+
+def _article(what: str) -> str:
+    return what if " " in what else ("an " if what[:1].lower() in "aeiou" else "a ") + what

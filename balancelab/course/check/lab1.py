@@ -68,10 +68,17 @@ def lab1_fourbar(crank_cw=None, rocker_cw=None) -> Design:
                   reference="Lecture 35: coupler replaced by equivalent masses at its joints")
 
 
+def _lamp_numbers(rng) -> dict:
+    """Task 1.1's lamp arm: the published numbers, or a student's (drawn from ``rng``)."""
+    if rng is None:
+        return dict(LAMP_ARM)
+    return dict(mass=round(rng.uniform(0.8, 1.6), 1), length=round(rng.uniform(0.35, 0.55), 2),
+                link_mass=round(rng.uniform(0.4, 0.8), 1), counter_mass=float(rng.choice([2.5, 3.0, 3.5, 4.0])))
+
+
 @register_task("1.1", "distance of the counterweight from the pivot", "r_c", "numeric",
-               "a number in metres (or a string like '22 cm'); accepted within 0.5 %")
-def _t11(answer):
-    lamp = LAMP_ARM
+               "a number in metres (or a string like '22 cm'); accepted within 0.5 %", numbers=_lamp_numbers)
+def _t11(answer, lamp):
     d = single_link_counterweight(mass=lamp["mass"], length=lamp["length"], counter_mass=lamp["counter_mass"],
                                   link_mass=lamp["link_mass"])
     return numeric(answer, d.parameters["r_c"], "length")

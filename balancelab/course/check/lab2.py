@@ -56,10 +56,18 @@ def lab2_lever(k: float, a, b, *, W: float | None = None, l: float | None = None
                         labels={"O": (0, (0.0, 0.0)), "a": (1, tuple(a)), "b": (0, tuple(b))}, link="lever")
 
 
+def _lamp_numbers(rng) -> dict:
+    """Task 2.1's lamp arm: the published numbers, or a student's (drawn from ``rng``)."""
+    if rng is None:
+        return dict(LAMP_SPRING)
+    return dict(mass=round(rng.uniform(1.0, 2.0), 1), length=round(rng.uniform(0.3, 0.5), 2),
+                b=round(rng.uniform(0.2, 0.3), 2), c=round(rng.uniform(0.1, 0.15), 2))
+
+
 @register_task("2.1", "spring rate that balances the lamp arm", "k_lamp", "numeric",
-               "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %")
-def _t21(answer):
-    return numeric(answer, single_link_spring(**LAMP_SPRING).parameters["k"], "stiffness")
+               "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %", numbers=_lamp_numbers)
+def _t21(answer, lamp):
+    return numeric(answer, single_link_spring(**lamp).parameters["k"], "stiffness")
 
 
 @register_task("2.2", "balance conditions of the generalized lever: (a_y, k)", "lever_conditions", "symbolic",
@@ -72,10 +80,12 @@ def _t22(answer):
     if isinstance(answer, (str, sp.Basic)) or not hasattr(answer, "__len__") or len(answer) != 2:
         raise AnswerError("The answer should be a pair (a_y, k) of expressions.",
                           "Write it like (a_y_expr, k_expr).")
-    W, l, ax, bx, by = sp.symbols("W l a_x b_x b_y", positive=True)
+    # b_x may have either sign (the anchor on either side of the pivot): it is a real symbol
+    W, l, ax, by = sp.symbols("W l a_x b_y", positive=True)
+    bx = sp.Symbol("b_x", real=True)
     names = "W l a_x b_x b_y"
-    ok1, m1, h1 = symbolic(answer[0], -ax * bx / by, names, "your a_y")
-    ok2, m2, h2 = symbolic(answer[1], W * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k")
+    ok1, m1, h1 = symbolic(answer[0], -ax * bx / by, names, "your a_y", signed="b_x")
+    ok2, m2, h2 = symbolic(answer[1], W * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k", signed="b_x")
     return ok1 and ok2, f"{m1} {m2}", h1 or h2
 
 

@@ -4,11 +4,13 @@ from __future__ import annotations
 import numpy as np
 
 from ...core.design import Design
+from ...core.elements import Attachment, Load, Spring
 from ...methods.lecture import serial_2r_parallelogram
 from ...methods.lustig import lustig_values
 from ...methods.singh import serial_2r_min_preload
 from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, vector
 from .core import AnswerError, register_task
+from .data import DesignData, decode_answer, encode_answer
 
 __all__ = ["LAB4_PARALLELOGRAM", "LAB4_SINGH", "lab4_singh_arm"]
 
@@ -68,9 +70,29 @@ def _same_loads(design: Design, ref: Design) -> bool:
         return False
 
 
+def _rebuild(data: DesignData) -> Design:
+    """Task 4.3's design rebuilt from plain data on the trusted 2R of Singh's arm (never the student's object)."""
+    ref = lab4_singh_arm()
+    ref_joints = [(j.body_i, tuple(j.point_i), j.body_j, tuple(j.point_j)) for j in ref.joints]
+    same = (data.mechanism == type(ref.kinematics).__name__ and len(data.joints) == len(ref_joints)
+            and all(a[0] == b[0] and a[2] == b[2] and np.allclose(a[1], b[1], atol=1e-9)
+                    and np.allclose(a[3], b[3], atol=1e-9) for a, b in zip(data.joints, ref_joints)))
+    if not same:
+        raise AnswerError("Your design is not a 2R arm with the links of Singh's 2R (l = 1.5 m).",
+                          "Build it from serial_2r_min_preload(...) of the task.")
+    if not data.springs or any(not (np.isfinite(k) and k > 0) for k, *_ in data.springs):
+        raise AnswerError("Every spring of your design needs a finite rate k > 0.", "Check the springs.")
+    loads = [Load(b, p, f, n, kind) for b, p, f, n, kind in data.loads]
+    springs = [Spring(k, ell, Attachment(*a), Attachment(*b), name=n) for k, ell, a, b, n in data.springs]
+    return ref.replace(loads=loads, springs=springs)
+
+
 def _student_arm(answer) -> Design:
     """Task 4.3's design: the student's Design, or the arm built from their free choices."""
-    if isinstance(answer, Design):
+    if isinstance(answer, Design):  # only a trusted caller passes a Design; check() passes DesignData
+        answer = decode_answer(encode_answer(answer))
+    if isinstance(answer, DesignData):
+        answer = _rebuild(answer)
         if not _same_loads(answer, lab4_singh_arm()):
             raise AnswerError("Your design does not carry the loads of Singh's 2R (W1 = 10 N at (1, 0.5) m, "
                               "W2 = 20 N at 2 m, l = 1.5 m) on the same two links.",

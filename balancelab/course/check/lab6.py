@@ -57,7 +57,7 @@ def _t62(answer):
     return numeric(answer, peaucellier_board(**LAB6_BOARD).parameters["k1"], "stiffness")
 
 
-@register_task("6.3", "a softer projector lift (open design)", "lift_design", "design",
+@register_task("6.3", "a projector lift with a shorter spring 1 (open design)", "lift_design", "design",
                "a dict {'l10': m, 'k1': N/m, 'k2': N/m}: spring 1's free length and both rates; "
                "k1 and k2 at most 600 N/m, l10 at most 0.45 m; balanced to 0.1 %", points=2)
 def _t63(answer):

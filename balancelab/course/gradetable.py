@@ -1,0 +1,211 @@
+"""The grade table: one :class:`GradeRow` per submission, written and read as CSV, merged, summarized.
+
+Used by :mod:`balancelab.course.grading`; a CSV written on one machine (one shard of a class)
+merges with the others' (:func:`merge_csv`).
+"""
+from __future__ import annotations
+
+import csv
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import check as _check
+
+__all__ = ["GradeRow", "write_csv", "read_csv", "merge_csv", "summary"]
+
+
+@dataclass
+class GradeRow:
+    """The grade of one submitted notebook.
+
+    Attributes
+    ----------
+    student : str
+        Submission name (path relative to the graded folder, no suffix).
+    lab : str
+        ``"lab1"`` ... or ``""`` when unknown.
+    status : str
+        ``"graded"``, ``"malformed"``, ``"unknown lab"``, ``"timeout"``, ``"kernel died"`` or
+        ``"error"``.
+    scores : dict
+        Task id -> points earned.
+    points : dict
+        Task id -> points possible.
+    notes : str
+        Cells that failed or were interrupted, or what went wrong.
+    messages : dict
+        Task id -> the verdict (``"✔ ..."`` or ``"✘ ..."``) with its message.
+    mismatch : str
+        What disagrees about the lab (file name, notebook metadata, ``--lab``); empty if nothing.
+
+    Examples
+    --------
+    >>> row = GradeRow("alice", "lab2", "graded", {"2.1": 1.0, "2.4": 0.0}, {"2.1": 1.0, "2.4": 2.0})
+    >>> row.total, row.max_total
+    (1.0, 3.0)
+    """
+
+    student: str
+    lab: str
+    status: str
+    scores: dict = field(default_factory=dict)
+    points: dict = field(default_factory=dict)
+    notes: str = ""
+    messages: dict = field(default_factory=dict)
+    mismatch: str = ""
+
+    @property
+    def total(self) -> float:
+        return float(sum(self.scores.values()))
+
+    @property
+    def max_total(self) -> float:
+        return float(sum(self.points.values()))
+
+
+def _task_columns(rows) -> list[str]:
+    order = [t.id for t in _check.tasks()]
+    used = {tid for r in rows for tid in r.points}
+    extra = sorted(used - set(order))
+    return [t for t in order if t in used] + extra
+
+
+def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
+    """Write the grade table: student, lab, status, total, max, a score column per task, notes,
+    the lab mismatch, then one verdict message column per task (``"2.1 message"``).
+
+    Parameters
+    ----------
+    rows : list of GradeRow
+    path : str or Path
+
+    Returns
+    -------
+    Path
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}, messages={"2.1": "✔ ok"})]
+    >>> path = write_csv(rows, pathlib.Path(tempfile.mkdtemp()) / "grades.csv")
+    >>> path.read_text(encoding="utf-8").splitlines()
+    ['student,lab,status,total,max,2.1,notes,mismatch,2.1 message', 'alice,lab2,graded,1,1,1,,,✔ ok']
+    """
+    path = Path(path)
+    cols = _task_columns(rows)
+    with path.open("w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow(["student", "lab", "status", "total", "max"] + cols + ["notes", "mismatch"]
+                   + [f"{c} message" for c in cols])
+        for r in rows:
+            w.writerow([r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
+                       + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes, r.mismatch]
+                       + [r.messages.get(c, "") for c in cols])
+    return path
+
+
+def read_csv(path: str | Path) -> list[GradeRow]:
+    """Read a table written by :func:`write_csv` back into rows.
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Returns
+    -------
+    list of GradeRow
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> p = write_csv([GradeRow("a", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})],
+    ...               pathlib.Path(tempfile.mkdtemp()) / "g.csv")
+    >>> read_csv(p)[0].scores
+    {'2.1': 1.0}
+    """
+    rows = []
+    with Path(path).open(newline="", encoding="utf-8") as f:
+        for rec in csv.DictReader(f):
+            lab = rec.get("lab", "")
+            tids = [k for k in rec if re.fullmatch(r"\d+\.\d+", k or "") and rec[k] != ""]
+            points = {t.id: float(t.points) for t in _check.tasks(lab)} if lab else {}
+            scores = {k: float(rec[k]) for k in tids}
+            rows.append(GradeRow(rec["student"], lab, rec["status"], scores, {k: points.get(k, 0.0) for k in tids},
+                                 rec.get("notes", ""), {k: rec.get(f"{k} message", "") for k in tids},
+                                 rec.get("mismatch", "")))
+    return rows
+
+
+def merge_csv(paths: list[str | Path], out: str | Path) -> Path:
+    """Merge the CSVs of several shards into one table (rows sorted by student; duplicates refused).
+
+    Parameters
+    ----------
+    paths : list of str or Path
+        The shards' tables.
+    out : str or Path
+        The merged table.
+
+    Returns
+    -------
+    Path
+
+    Raises
+    ------
+    ValueError
+        If a student appears in two tables.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> d = pathlib.Path(tempfile.mkdtemp())
+    >>> a = write_csv([GradeRow("b", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})], d / "a.csv")
+    >>> b = write_csv([GradeRow("a", "lab1", "graded", {"1.1": 0.0}, {"1.1": 1.0})], d / "b.csv")
+    >>> [r.student for r in read_csv(merge_csv([a, b], d / "all.csv"))]
+    ['a', 'b']
+    """
+    rows, seen = [], set()
+    for p in paths:
+        for r in read_csv(p):
+            if r.student in seen:
+                raise ValueError(f"student {r.student!r} appears in more than one table")
+            seen.add(r.student)
+            rows.append(r)
+    return write_csv(sorted(rows, key=lambda r: r.student), out)
+
+
+def summary(rows: list[GradeRow]) -> str:
+    """A plain-text table of the grades (what the command prints).
+
+    Parameters
+    ----------
+    rows : list of GradeRow
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}),
+    ...         GradeRow("bob", "", "malformed", notes="not a valid notebook")]
+    >>> print("\\n".join(summary(rows).splitlines()[-2:]))
+    2 notebooks, 1 graded, 1 with problems
+      bob: malformed: not a valid notebook
+    """
+    cols = _task_columns(rows)
+    head = ["student", "lab", "status", "score"] + cols
+    body = [[r.student, r.lab, r.status, f"{r.total:g}/{r.max_total:g}"]
+            + [f"{r.scores[c]:g}" if c in r.scores else "-" for c in cols] for r in rows]
+    widths = [max(len(str(x)) for x in col) for col in zip(head, *body)] if body else [len(h) for h in head]
+    fmt = lambda cells: "  ".join(str(c).ljust(w) for c, w in zip(cells, widths))  # noqa: E731
+    lines = [fmt(head), fmt(["-" * w for w in widths])] + [fmt(b) for b in body]
+    graded = [r for r in rows if r.status == "graded"]
+    lines.append(f"{len(rows)} notebooks, {len(graded)} graded, {len(rows) - len(graded)} with problems")
+    for r in rows:
+        if r.status != "graded":
+            lines.append(f"  {r.student}: {r.status}: {r.notes}")
+        elif r.mismatch:
+            lines.append(f"  {r.student}: lab mismatch: {r.mismatch}")
+    return "\n".join(lines)
