@@ -11,7 +11,7 @@ from balancelab.methods.singh.peaucellier import peaucellier_board
 from balancelab.methods.singh.scissors import scissors_lift
 from balancelab.course import check as ck
 from balancelab.course.check import Verdict, check, explain, tasks
-from balancelab.course.check import core, answers, lab1, lab2, lab3, lab4, lab5, lab6
+from balancelab.course.check import core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8
 from balancelab.methods.lecture.fourbar import fourbar_counterweights
 
 # ----------------------------------------------------------------- expected answers, derived by
@@ -90,6 +90,55 @@ def _crank_rate():
     return bl.G * abs(M2) / (0.2 * 0.15)
 
 
+def _lab7_free_choices():
+    """Unknowns minus the rank of the balance conditions, from the solver's own problem statement."""
+    from balancelab.methods.general import free_choices
+
+    arm = lab7.lab7_arm()
+    count = free_choices(arm, springs=lab7.lab7_candidates(arm))
+    return count.nvar - count.rank
+
+
+def _lab7_least_stiffness():
+    arm = lab7.lab7_arm()
+    softest = bl.balance(arm, springs=lab7.lab7_candidates(arm), objective="min_stiffness")
+    assert softest.balance_report().balanced
+    return sum(s.k for s in softest.springs)
+
+
+def _lab7_lamp_springs():
+    # the lecture's own lamp arm (both springs at the base), written as plain numbers
+    recipe = bl.lecture.serial_2r_base_springs()
+    return [(s.k, (recipe.bodies[s.a.body], s.a.point), (recipe.bodies[s.b.body], s.b.point))
+            for s in recipe.springs]
+
+
+def _lab8_springs():
+    from balancelab.methods.practice import selection
+
+    arm = lab8.lab8_arm()
+    strokes = dict(zip(("k1", "k2"), selection.spring_strokes(arm, 41)))
+    out = {}
+    for s in arm.springs:
+        real = selection.select_spring(s.k, strokes[s.name]).spring
+        out[s.name] = {"d": real.wire_diameter, "D": real.coil_diameter, "Na": real.active_coils,
+                       "F_i": real.initial_tension}
+    return out
+
+
+def _lab8_study():
+    from balancelab.methods.practice import tolerance
+
+    springs = _lab8_springs()
+    study = tolerance.monte_carlo(lab8.built_arm(springs), lab8.LAB8_TOLERANCES, n=3000, grid=15, seed=2024)
+    return {"springs": springs, "quantile": study.quantile(0.95)}
+
+
+def _lab8_shoulder_torque():
+    # 2 % of k1 b1 c1 = 2 % of g (m1 p1 + m2 l1): the spring's extra pull at theta_1 = 0, by hand
+    return 0.02 * bl.G * (1.0 * 0.25 + 1.0 * 0.5)
+
+
 RIGHT = {
     "1.1": lambda: _lamp_r_c(),
     "1.2": lambda: sp.sympify("r*(2*m + m_l)/(2*m_c)"),
@@ -113,6 +162,12 @@ RIGHT = {
     "6.2": lambda: peaucellier_board().parameters["k1"] * (0.2 / 0.25) ** 2,
     "6.3": lambda: {"l10": 0.42, "k1": scissors_lift(length=0.5, payload_mass=8.0).parameters["k1_l10"] / 0.42,
                     "k2": scissors_lift(length=0.5, payload_mass=8.0).parameters["k1_l10"] / 0.42},
+    "7.1": _lab7_free_choices,
+    "7.2": _lab7_least_stiffness,
+    "7.3": _lab7_lamp_springs,
+    "8.1": _lab8_springs,
+    "8.2": _lab8_study,
+    "8.3": _lab8_shoulder_torque,
 }
 
 
@@ -340,7 +395,7 @@ def test_docstring_examples_of_the_lab_modules_run():
     import balancelab.course.grading
     import balancelab.course.labtools
 
-    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, balancelab.course.labtools,
+    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, balancelab.course.labtools,
                 balancelab.course.grading):
         result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, mod.__name__

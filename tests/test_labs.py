@@ -1,4 +1,4 @@
-"""The labs: six of them, solutions pass nbval, student versions are generated, leak nothing and run."""
+"""The labs: eight of them, solutions pass nbval, student versions are generated, leak nothing and run."""
 import copy
 import re
 import subprocess
@@ -175,8 +175,9 @@ def test_solution_notebooks_pass_nbval():
 # ------------------------------------------------------------------------- grading
 
 
-def test_grading_solution_and_student_versions(tmp_path):
-    lab = "lab1"
+@pytest.mark.parametrize("lab", ["lab1", "lab7", "lab8"])
+def test_grading_solution_and_student_versions(lab, tmp_path):
+    """The trusted grader gives a solution full marks and the untouched student version none."""
     sol = _lab_file(lab)
     full = grade_notebook(sol, cell_timeout=120)
     assert full.status == "graded" and full.total == full.max_total == sum(t.points for t in tasks(lab))

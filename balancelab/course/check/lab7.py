@@ -1,88 +1,111 @@
-"""Lab 7, balance your own linkage: formative checks as pure functions on plain data.
+"""Lab 7, balance your own linkage: the linkage builder and the general solver of chapter 7.
 
-Self-contained on purpose: the tasks are *not* entered in the shared task registry of
-:mod:`.core` (the grading pipeline is being rewritten); :data:`TASKS` maps each task id to
-its points, what an answer looks like and its check, a pure function ``check(answer) ->
-Verdict`` that builds everything it needs from the answer (plain numbers, strings and
-tuples) and the library, never prints the expected value and never raises.
+The tasks are registered with :func:`~.core.register_task`, so the notebook's ``check`` and
+the trusted grader run the same judges on the same plain data; each judge builds everything
+it needs from the answer (plain numbers, strings and tuples) and the library:
 
-* 7.1: free choices left by the all-pairs candidates on the 3R lamp arm of chapter 7;
-* 7.2: the least total stiffness of that arm (the solver's ``"min_stiffness"``);
+* 7.1: free choices left on the lab's 3R lamp arm (:data:`LAB7_ARM`, not the chapter's) by
+  the all-pairs candidates of chapter 7 without the ground-to-``upper`` spring;
+* 7.2: the least total stiffness of that arm with those candidates (``"min_stiffness"``);
 * 7.3 (open design): springs for the parallelogram desk lamp that fit the constraints of
   :data:`LAB7_LAMP` (at most three ZFL springs from the base, anchors in a box, rates
-  limited), checked by building the design and running its balance report.
+  limited), given as numbers; the judge rebuilds the lamp with them and runs its balance
+  report.
 """
 from __future__ import annotations
 
 import functools
-from typing import Any, Callable, NamedTuple
 
+from ...core.design import Design
+from ...core.elements import Spring
 from ...methods.general import balance, free_choices
 from ...methods.general.examples import all_pairs, arm_3r, parallelogram_lamp
 from .answers import design_balanced, numeric, point, quantity
-from .core import AnswerError, Verdict
+from .core import AnswerError, register_task
 
-__all__ = ["LAB7_LAMP", "Lab7Task", "TASKS", "check_lab7", "lamp_with_springs"]
+__all__ = ["LAB7_ARM", "LAB7_LAMP", "lab7_arm", "lab7_candidates", "lamp_with_springs"]
+
+#: Lab 7's 3R arm (m, kg): other numbers than chapter 7's, so the chapter does not print the answers.
+LAB7_ARM = dict(lengths=(0.45, 0.35, 0.25), masses=(1.8, 1.2, 0.8), lamp=0.4)
 
 #: The open design task's constraints: anchors (on the ground) in ``box`` (m), rates up to ``k_max`` (N/m).
 LAB7_LAMP = dict(box=((-0.15, 0.15), (0.0, 0.3)), k_max=300.0, max_springs=3)
 
 
-class Lab7Task(NamedTuple):
-    """One task: its points, what an answer looks like, and its check ``answer -> Verdict``."""
+def lab7_arm() -> Design:
+    """Lab 7's unbalanced 3R lamp arm (:func:`~balancelab.methods.general.examples.arm_3r` with :data:`LAB7_ARM`).
 
-    points: float
-    expects: str
-    check: Callable[[Any], Verdict]
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> lab7_arm().bodies
+    ('ground', 'upper', 'fore', 'hand')
+    """
+    return arm_3r(**LAB7_ARM)
+
+
+def lab7_candidates(arm: Design) -> list:
+    """Chapter 7's all-pairs candidate springs of ``arm`` without the one from the ground to ``upper``.
+
+    Parameters
+    ----------
+    arm : Design
+        A 3R arm such as :func:`lab7_arm`.
+
+    Returns
+    -------
+    list
+        Candidates for :func:`~balancelab.balance`.
+
+    Examples
+    --------
+    >>> len(lab7_candidates(lab7_arm()))
+    5
+    """
+    return [c for c in all_pairs(arm) if {c[0][0], c[1][0]} != {"ground", "upper"}]
 
 
 @functools.lru_cache(maxsize=None)
 def _arm_numbers() -> tuple[int, float]:
-    arm = arm_3r()
-    cands = all_pairs(arm)
+    arm = lab7_arm()
+    cands = lab7_candidates(arm)
     left = free_choices(arm, springs=cands).free_choices
     stiff = balance(arm, springs=cands, objective="min_stiffness")
     return left, float(sum(s.k for s in stiff.springs))
 
 
-def _verdict(task: str, judged: tuple[bool, str, str]) -> Verdict:
-    correct, message, hint = judged
-    points = TASKS[task].points
-    return Verdict(task, bool(correct), message, "" if correct else hint, points if correct else 0.0, points)
-
-
-def _guarded(task: str, judge: Callable[[Any], tuple[bool, str, str]]) -> Callable[[Any], Verdict]:
-    """A check that turns a malformed answer (or a crash while building it) into a verdict."""
-
-    def check(answer):
-        try:
-            return _verdict(task, judge(answer))
-        except AnswerError as err:
-            return _verdict(task, (False, str(err), err.hint or TASKS[task].expects))
-        except (ValueError, TypeError, ArithmeticError) as err:
-            return _verdict(task, (False, f"This answer could not be used: {err}", "Read what the task expects."))
-
-    check.__name__ = f"check_{task.replace('.', '_')}"
-    check.__doc__ = f"Check an answer to task {task}; returns a Verdict."
-    return check
-
-
+@register_task("7.1", "free choices left on lab 7's 3R arm without the ground-to-upper spring", "n_free", "numeric",
+               "a whole number; accepted within 0.5 %")
 def _t71(answer):
-    value = quantity(answer, "ratio", "the number of free choices")
-    if value != int(value):
-        raise AnswerError("A number of free choices is a whole number.", "Unknowns minus the rank.")
-    expected = _arm_numbers()[0]
-    if int(value) == expected:
-        return True, "Right: that many independent directions keep the arm balanced.", ""
-    return False, "Not the number of free choices.", "Use free_choices(arm, springs=candidates)."
+    return numeric(answer, float(_arm_numbers()[0]), "ratio")
 
 
+@register_task("7.2", "least total stiffness of lab 7's 3R arm with those candidates", "k_total_min",
+               "numeric", "a number in N/m (or with a unit); accepted within 0.5 %")
 def _t72(answer):
     return numeric(answer, _arm_numbers()[1], "stiffness")
 
 
-def lamp_with_springs(springs) -> Any:
+def lamp_with_springs(springs) -> Design:
     """The parallelogram lamp of chapter 7 with ``springs`` as ``(k, (body, (x, y)), (body, (x, y)))`` ZFL springs.
+
+    Parameters
+    ----------
+    springs : sequence
+        Each spring as its rate (N/m, or a string with a unit) and its two ends, each a body
+        (name or index) and a local point (m).
+
+    Returns
+    -------
+    Design
+
+    Raises
+    ------
+    AnswerError
+        When a spring is not of that form or names a body the lamp has not.
 
     Examples
     --------
@@ -105,12 +128,17 @@ def lamp_with_springs(springs) -> Any:
                 raise AnswerError(f"Spring {i + 1} names the body {body!r}, which the lamp has not.",
                                   f"The bodies are {lamp.bodies}.")
             ends.append((lamp.bodies.index(body) if isinstance(body, str) else int(body), tuple(point(p, "a point"))))
-        built.append((quantity(k, "stiffness", f"k of spring {i + 1}"), ends[0], ends[1]))
-    from ...core.elements import Spring
-
+        rate = quantity(k, "stiffness", f"k of spring {i + 1}")
+        if rate <= 0:
+            raise AnswerError(f"k of spring {i + 1} must be positive.", "A spring rate is > 0 N/m.")
+        built.append((rate, ends[0], ends[1]))
     return lamp.replace(springs=[Spring(k, 0.0, a, b, name=f"k{i + 1}") for i, (k, a, b) in enumerate(built)])
 
 
+@register_task("7.3", "ZFL springs for the parallelogram lamp within the limits (open design)", "lamp_springs",
+               "design", "a list of up to 3 springs (k, (body, (x, y)), (body, (x, y))) in N/m and m, each from the "
+               "ground with its anchor in -0.15 <= x <= 0.15 m, 0 <= y <= 0.3 m and k <= 300 N/m; balanced "
+               "to 0.1 %", points=3)
 def _t73(answer):
     if isinstance(answer, (str, bytes)) or not hasattr(answer, "__len__"):
         raise AnswerError("Give a list of springs.", "A list of (k, (body, (x, y)), (body, (x, y))).")
@@ -125,27 +153,3 @@ def _t73(answer):
             (all(on_ground) and all(inside), "every anchor inside the box"),
             (all(s.k <= lim["k_max"] * (1 + 1e-9) for s in design.springs), f"k at most {lim['k_max']:g} N/m")]
     return design_balanced(design, cons)
-
-
-TASKS: dict[str, Lab7Task] = {
-    "7.1": Lab7Task(1.0, "a whole number", _guarded("7.1", _t71)),
-    "7.2": Lab7Task(1.0, "a number in N/m (or with a unit); accepted within 0.5 %", _guarded("7.2", _t72)),
-    "7.3": Lab7Task(3.0, "a list of up to 3 springs (k, (body, (x, y)), (body, (x, y))), each from the ground "
-                    "with its anchor in -0.15 <= x <= 0.15 m, 0 <= y <= 0.3 m and k <= 300 N/m; balanced",
-                    _guarded("7.3", _t73)),
-}
-
-
-def check_lab7(task: str, answer: Any) -> Verdict:
-    """Check ``answer`` to lab 7's task ``task`` (``"7.1"`` ...); a Verdict, never an exception.
-
-    Examples
-    --------
-    >>> check_lab7("7.1", "seven").correct
-    False
-    >>> check_lab7("7.9", 1).message
-    "There is no task '7.9' in lab 7 (tasks: ['7.1', '7.2', '7.3'])."
-    """
-    if task not in TASKS:
-        return Verdict(str(task), False, f"There is no task {task!r} in lab 7 (tasks: {sorted(TASKS)}).", "", 0.0, 0.0)
-    return TASKS[task].check(answer)

@@ -1,17 +1,20 @@
-"""Lab 8, from ideal to real: real springs for the lamp arm, and a tolerance study.
+"""Lab 8, from ideal to real: real springs for the lamp arm, a tolerance study, a rate error.
 
-Self-contained formative checks: pure functions on plain data (dicts of numbers) that
-return a :class:`Lab8Result` and never raise. They are not registered with the task
-registry of :mod:`.core` (the grading pipeline decides how lab 8 is graded); a notebook
-calls them directly. Every verdict is computed by physics from the submitted spring data:
-the real springs are built with :mod:`balancelab.methods.practice`, put into the lab's
-arm, and the residual torque (and, for task 8.2, a Monte Carlo of built arms) is
-evaluated. Expected values are never revealed.
+The tasks are registered with :func:`~.core.register_task`, so the notebook's ``check`` and
+the trusted grader run the same judges on the same plain data (springs as dicts of numbers).
+Every verdict is computed by physics from the submitted spring data: the real springs are
+built with :mod:`balancelab.methods.practice`, put into the lab's arm, and the residual
+generalized force (and, for task 8.2, a Monte Carlo of built arms) is evaluated. Expected
+values are never revealed.
+
+* 8.1 (design, open): real extension springs, over pulleys, within :data:`LAB8_BUDGET`;
+* 8.2 (design): the 95 % quantile of a tolerance study of *those* springs, under
+  :data:`LAB8_QUANTILE_LIMIT`;
+* 8.3 (derive): the shoulder's residual torque when spring 1 is 2 % stiffer than ideal.
 """
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 
@@ -22,9 +25,11 @@ from ...methods.practice.forces import generalized_force
 from ...methods.practice.selection import spring_strokes
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.practice.tolerance import Tolerances, monte_carlo
+from .answers import as_mapping, numeric, quantity
+from .core import AnswerError, register_task
 
-__all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "Lab8Result", "lab8_arm",
-           "real_springs", "built_arm", "check_spring_choice", "check_tolerance_study"]
+__all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB8_RATE_ERROR", "lab8_arm",
+           "real_springs", "built_arm", "spring_problems", "rate_error_arm"]
 
 #: The lamp arm of lab 8 (lecture 35's desk lamp with both springs at the base).
 LAB8_ARM = dict(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)), b=(0.3, 0.25), c=(0.15, 0.1))
@@ -34,24 +39,19 @@ LAB8_BUDGET = 0.1
 LAB8_TOLERANCES = Tolerances(k=0.02, attachment=0.0005, mass=0.01)
 #: 95 % of built arms must stay within this residual (N m).
 LAB8_QUANTILE_LIMIT = 0.5
+#: Task 8.3: spring 1 is this much (relative) stiffer than its ideal rate.
+LAB8_RATE_ERROR = 0.02
 
-
-class Lab8Result(NamedTuple):
-    """Outcome of a lab-8 check: ``task``, ``correct``, ``message`` and a ``hint`` when not correct."""
-
-    task: str
-    correct: bool
-    message: str
-    hint: str = ""
-
-    def __str__(self) -> str:
-        head = "✔ correct" if self.correct else "✘ not yet"
-        return f"Task {self.task}: {head}. {self.message}" + (f"\n  Hint: {self.hint}" if self.hint and not self.correct
-                                                               else "")
+_SPRING_KEYS = ("d", "D", "Na", "F_i")
+_SPRING_FORM = "{'k1': {'d': m, 'D': m, 'Na': coils, 'F_i': N}, 'k2': {...}}"
 
 
 def lab8_arm() -> Design:
     """The ideal lamp arm of lab 8 (two ZFL springs ``k1``, ``k2`` at the base).
+
+    Returns
+    -------
+    Design
 
     Examples
     --------
@@ -64,29 +64,55 @@ def lab8_arm() -> Design:
 def real_springs(springs) -> dict:
     """``{"k1": {"d": m, "D": m, "Na": coils, "F_i": N}, ...}`` as :class:`ExtensionSpring` objects.
 
+    Lengths and forces may carry units (``"1.8 mm"``, ``(3, "N")``).
+
+    Parameters
+    ----------
+    springs : dict
+        The two springs ``"k1"`` and ``"k2"``, each with ``d`` (wire diameter), ``D`` (mean
+        coil diameter), ``Na`` (active coils) and ``F_i`` (initial tension).
+
+    Returns
+    -------
+    dict of ExtensionSpring
+
     Raises
     ------
-    ValueError, TypeError
+    AnswerError
         With a message for the student when the data are not two springs of that form.
 
     Examples
     --------
     >>> real_springs({"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 3.0},
-    ...               "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 1.5}})["k2"].active_coils
+    ...               "k2": {"d": "1 mm", "D": 10e-3, "Na": 105, "F_i": 1.5}})["k2"].active_coils
     105.0
     """
-    if not isinstance(springs, dict) or set(springs) != {"k1", "k2"}:
-        raise TypeError("give a dict with the two springs 'k1' and 'k2'")
+    as_mapping(springs, ("k1", "k2"), "your springs")
     out = {}
-    for name, data in springs.items():
-        if not isinstance(data, dict) or set(data) != {"d", "D", "Na", "F_i"}:
-            raise TypeError(f"spring {name} must be a dict with 'd' (m), 'D' (m), 'Na' and 'F_i' (N)")
-        out[name] = ExtensionSpring(float(data["d"]), float(data["D"]), float(data["Na"]), float(data["F_i"]))
+    for name in ("k1", "k2"):
+        data = as_mapping(springs[name], _SPRING_KEYS, f"spring {name}")
+        d, D = (quantity(data[key], "length", f"{key} of {name}") for key in ("d", "D"))
+        na = quantity(data["Na"], "ratio", f"Na of {name}")
+        f_i = quantity(data["F_i"], "force", f"F_i of {name}")
+        try:
+            out[name] = ExtensionSpring(d, D, na, f_i)
+        except (ValueError, TypeError) as err:
+            raise AnswerError(f"Spring {name} cannot be made: {err}.",
+                              "d and D in metres (D > d), Na coils > 0, F_i in newtons >= 0.") from None
     return out
 
 
 def built_arm(springs) -> Design:
     """The lab's arm with the submitted real springs, each pulling a string over an ideal pulley.
+
+    Parameters
+    ----------
+    springs : dict
+        As in :func:`real_springs`.
+
+    Returns
+    -------
+    Design
 
     Examples
     --------
@@ -101,8 +127,24 @@ def built_arm(springs) -> Design:
     return ideal.replace(springs=new, name="lab 8 lamp arm with real springs")
 
 
-def _spring_problems(springs) -> list[str]:
-    """Why each submitted spring cannot do its job (empty when all can)."""
+def spring_problems(springs) -> list[str]:
+    """Why each submitted spring cannot do its job over a pulley (empty when all can).
+
+    Parameters
+    ----------
+    springs : dict
+        As in :func:`real_springs`.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> spring_problems({"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 4.0},
+    ...                  "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 2.5}})
+    []
+    """
     real = real_springs(springs)
     strokes = dict(zip(("k1", "k2"), spring_strokes(lab8_arm(), 41)))
     problems = []
@@ -118,59 +160,71 @@ def _spring_problems(springs) -> list[str]:
     return problems
 
 
-def check_spring_choice(springs, budget: float = LAB8_BUDGET) -> Lab8Result:
-    """Task 8.1: real springs (over pulleys) that keep the lamp arm within the torque budget.
+def rate_error_arm(k1_error: float = 0.0, k2_error: float = 0.0) -> Design:
+    """The lab's arm with ideal ZFL springs whose rates are off by the given fractions.
+
+    Parameters
+    ----------
+    k1_error, k2_error : float
+        Relative rate errors of springs 1 and 2 (``0.02``: 2 % stiffer), > -1.
+
+    Returns
+    -------
+    Design
 
     Examples
     --------
-    >>> ok = {"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 4.0},
-    ...       "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 2.5}}
-    >>> check_spring_choice(ok).correct
-    True
+    >>> rate_error_arm().balance_report().balanced, rate_error_arm(0.01).balance_report().balanced
+    (True, False)
     """
-    try:
-        problems = _spring_problems(springs)
-        q, Q = generalized_force(built_arm(springs), None, 41)
-    except (TypeError, ValueError, KeyError) as err:
-        return Lab8Result("8.1", False, f"These spring data cannot be read: {err}.",
-                          "Each spring needs d and D in metres, Na coils and F_i in newtons.")
+    errors = {"k1": float(k1_error), "k2": float(k2_error)}
+    for name, e in errors.items():
+        if not math.isfinite(e) or e <= -1:
+            raise ValueError(f"{name}_error must be a finite number > -1, got {e!r}")
+    ideal = lab8_arm()
+    new = [Spring(s.k * (1 + errors[s.name]), s.free_length, s.a, s.b, name=s.name) for s in ideal.springs]
+    return ideal.replace(springs=new, name="lab 8 lamp arm with rate errors")
+
+
+@register_task("8.1", "real springs (over pulleys) that keep the lamp arm within 0.1 N m (open design)",
+               "my_springs", "design", f"a dict {_SPRING_FORM} (SI units); each spring's initial tension in "
+               "the range its index allows, taut and within its allowable stress over its stroke; the built "
+               "arm's residual generalized force at most 0.1 N m", points=2)
+def _t81(answer):
+    problems = spring_problems(answer)
     if problems:
-        return Lab8Result("8.1", False, "; ".join(problems) + ".", "Check the stroke and the stress of each spring.")
+        return False, "; ".join(problems) + ".", "Check the stroke and the stress of each spring."
+    _, Q = generalized_force(built_arm(answer), None, 41)
     worst = float(np.abs(Q).max())
-    if not math.isfinite(worst) or worst > budget:
-        return Lab8Result("8.1", False, f"The built arm's largest residual is {worst:.3g} N m, over the "
-                          f"{budget:g} N m budget.", "Bring each spring's rate closer to the ideal one.")
-    return Lab8Result("8.1", True, f"Largest residual {worst:.3g} N m, within {budget:g} N m; every spring "
-                      "stays taut and within its allowable stress.")
+    if not math.isfinite(worst) or worst > LAB8_BUDGET:
+        return (False, f"The built arm's largest residual is {worst:.3g} N m, over the {LAB8_BUDGET:g} N m budget.",
+                "Bring each spring's rate closer to the ideal one.")
+    return True, (f"Largest residual {worst:.3g} N m, within {LAB8_BUDGET:g} N m; every spring stays taut and "
+                  "within its allowable stress."), ""
 
 
-def check_tolerance_study(springs, quantile: float, n: int = 4000) -> Lab8Result:
-    """Task 8.2: the 95 % quantile of the worst residual of built arms, and whether it meets the limit.
-
-    The student's number (N m) is accepted within 10 % of a Monte Carlo with
-    :data:`LAB8_TOLERANCES` (``n`` built arms, 15 configurations per angle), and the
-    quantile must be at most :data:`LAB8_QUANTILE_LIMIT`.
-
-    Examples
-    --------
-    >>> ok = {"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 4.0},
-    ...       "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 2.5}}
-    >>> check_tolerance_study(ok, 0.01).correct
-    False
-    """
-    try:
-        value = float(quantile)
-        design = built_arm(springs)
-    except (TypeError, ValueError) as err:
-        return Lab8Result("8.2", False, f"Cannot read the answer: {err}.", "Give the quantile as a number in N m.")
-    if not math.isfinite(value) or value <= 0:
-        return Lab8Result("8.2", False, "The quantile must be a positive number of N m.", "Use result.quantile(0.95).")
+@register_task("8.2", "95 % quantile of the worst residual of built arms with your springs", "tolerance_study",
+               "design", "a dict {'springs': your springs of task 8.1, 'quantile': N m}: the 95 % quantile of "
+               "the worst residual over a Monte Carlo of built arms with the lab's tolerances; accepted within "
+               "10 % of the grader's Monte Carlo, and it must be at most 0.5 N m")
+def _t82(answer, n: int = 4000):
+    a = as_mapping(answer, ("springs", "quantile"), "your study")
+    value = quantity(a["quantile"], "torque", "the quantile")
+    design = built_arm(a["springs"])
+    if value <= 0:
+        raise AnswerError("The quantile must be a positive number of N m.", "Use result.quantile(0.95).")
     reference = monte_carlo(design, LAB8_TOLERANCES, n, grid=15, seed=0).quantile(0.95)
     if abs(value / reference - 1) > 0.10:
-        return Lab8Result("8.2", False, "Your quantile is not within 10 % of a Monte Carlo of your springs.",
-                          "Use the lab's tolerances, enough built arms (>= 2000) and a grid over both angles.")
+        return (False, "Your quantile is not within 10 % of a Monte Carlo of your springs.",
+                "Use the lab's tolerances, enough built arms (>= 2000) and a grid over both angles.")
     if reference > LAB8_QUANTILE_LIMIT:
-        return Lab8Result("8.2", False, f"Right number, but 95 % of built arms exceed {LAB8_QUANTILE_LIMIT:g} N m.",
-                          "Which tolerance dominates? Springs with rates closer to ideal do not help against it.")
-    return Lab8Result("8.2", True, f"95 % of built arms stay within {value:.3g} N m, under "
-                      f"{LAB8_QUANTILE_LIMIT:g} N m.")
+        return (False, f"Right number, but 95 % of built arms exceed {LAB8_QUANTILE_LIMIT:g} N m.",
+                "Which tolerance dominates? Springs with rates closer to ideal do not help against it.")
+    return True, f"95 % of built arms stay within {value:.3g} N m, under {LAB8_QUANTILE_LIMIT:g} N m.", ""
+
+
+@register_task("8.3", "shoulder torque (N m) left by spring 1 being 2 % too stiff, link 1 horizontal",
+               "shoulder_torque", "numeric", "a number in N m (its size); accepted within 0.5 %")
+def _t83(answer):
+    q, Q = generalized_force(rate_error_arm(LAB8_RATE_ERROR), np.array([[0.0, 0.0]]))
+    return numeric(answer, float(abs(Q[0, 0])), "torque")
