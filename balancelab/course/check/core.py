@@ -1,6 +1,6 @@
 """The core of the answer checks: verdicts and the task registry.
 
-:func:`register_task` is how a lab module (``lab1`` ... ``lab6``) declares a task and its
+:func:`register_task` is how a lab module (``lab1`` ... ``lab8``) declares a task and its
 judge; :func:`check` runs the judge on a student's answer and turns whatever happens
 (right, wrong, malformed, a crash) into a :class:`Verdict`. Reading and judging answers
 is :mod:`.answers`' job.
@@ -94,7 +94,7 @@ class Task:
     id : str
         ``"<lab>.<n>"``, e.g. ``"1.3"``.
     lab : str
-        ``"lab1"`` ... ``"lab6"``.
+        ``"lab1"`` ... ``"lab8"``.
     title : str
         One line saying what is asked.
     variable : str
