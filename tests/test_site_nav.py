@@ -207,6 +207,16 @@ def test_search_excerpts_quote_the_text_not_the_buttons(browser, server):
         page.goto(server + "search.html?q=pulley", wait_until="load")
         excerpts = page.locator("#search-results li p.context")
         expect(excerpts.first).to_be_visible()
+        # the excerpts arrive one page fetch at a time: wait until the search has finished and
+        # every result has its excerpt (a result still loading would read as an empty one)
+        expect(page.locator("#search-results p.search-summary")).to_contain_text("finished")
+        try:
+            page.wait_for_function(
+                "() => { const li = [...document.querySelectorAll('#search-results li')];"
+                " return li.length > 0 && li.every(x => { const p = x.querySelector('p.context');"
+                " return p && p.textContent.trim().length > 0; }); }")
+        except Exception:   # noqa: BLE001 - an excerpt that never comes is reported just below
+            pass
         results = page.locator("#search-results li").evaluate_all(
             "items => items.map(li => [li.querySelector('a').getAttribute('href'), "
             "(li.querySelector('p.context') || {}).textContent || ''])")
