@@ -85,6 +85,21 @@ NEEDS_CHROMIUM = pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is
                                                              "script installs it with apt: apt-get install chromium)")
 
 
+def lab8_reference_springs() -> dict:
+    """A right answer to lab 8's task 8.1: the library's spring selection for the lab's arm."""
+    from balancelab.course.check import lab8
+    from balancelab.methods.practice import selection
+
+    arm = lab8.lab8_arm()
+    strokes = dict(zip(("k1", "k2"), selection.spring_strokes(arm, 41)))
+    out = {}
+    for s in arm.springs:
+        real = selection.select_spring(s.k, strokes[s.name]).spring
+        out[s.name] = {"d": real.wire_diameter, "D": real.coil_diameter, "Na": real.active_coils,
+                       "F_i": real.initial_tension}
+    return out
+
+
 def free_port() -> int:
     """A free TCP port on 127.0.0.1."""
     with socket.socket() as s:

@@ -9,6 +9,7 @@ import balancelab as bl
 import balancelab.methods.lustig  # noqa: F401  (bl.lustig)
 from balancelab.methods.singh.peaucellier import peaucellier_board
 from balancelab.methods.singh.scissors import scissors_lift
+from conftest import lab8_reference_springs
 from balancelab.course import check as ck
 from balancelab.course.check import Verdict, check, explain, tasks
 from balancelab.course.check import core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8
@@ -113,23 +114,11 @@ def _lab7_lamp_springs():
             for s in recipe.springs]
 
 
-def _lab8_springs():
-    from balancelab.methods.practice import selection
-
-    arm = lab8.lab8_arm()
-    strokes = dict(zip(("k1", "k2"), selection.spring_strokes(arm, 41)))
-    out = {}
-    for s in arm.springs:
-        real = selection.select_spring(s.k, strokes[s.name]).spring
-        out[s.name] = {"d": real.wire_diameter, "D": real.coil_diameter, "Na": real.active_coils,
-                       "F_i": real.initial_tension}
-    return out
-
 
 def _lab8_study():
     from balancelab.methods.practice import tolerance
 
-    springs = _lab8_springs()
+    springs = lab8_reference_springs()
     study = tolerance.monte_carlo(lab8.built_arm(springs), lab8.LAB8_TOLERANCES, n=3000, grid=15, seed=2024)
     return {"springs": springs, "quantile": study.quantile(0.95)}
 
@@ -165,7 +154,7 @@ RIGHT = {
     "7.1": _lab7_free_choices,
     "7.2": _lab7_least_stiffness,
     "7.3": _lab7_lamp_springs,
-    "8.1": _lab8_springs,
+    "8.1": lab8_reference_springs,
     "8.2": _lab8_study,
     "8.3": _lab8_shoulder_torque,
 }

@@ -6,19 +6,13 @@ import pytest
 
 import balancelab as bl
 from balancelab.course.check import check, check_data, encode_answer, lab8, tasks
-from balancelab.methods.practice import forces, selection, tolerance
+from balancelab.methods.practice import forces, tolerance
+from conftest import lab8_reference_springs
 
 
 @pytest.fixture(scope="module")
 def good():
-    arm = lab8.lab8_arm()
-    strokes = dict(zip(("k1", "k2"), selection.spring_strokes(arm, 41)))
-    out = {}
-    for s in arm.springs:
-        real = selection.select_spring(s.k, strokes[s.name]).spring
-        out[s.name] = {"d": real.wire_diameter, "D": real.coil_diameter, "Na": real.active_coils,
-                       "F_i": real.initial_tension}
-    return out
+    return lab8_reference_springs()
 
 
 def test_lab8_is_registered():
