@@ -245,3 +245,25 @@ def test_without_the_sandbox_the_grader_warns_and_still_grades(tmp_path):
         row = grade_notebook(path, sandbox=False, cell_timeout=30, notebook_timeout=120)
     assert row.scores["2.1"] == 1.0 and "NO SANDBOX" in row.notes
     assert "bubblewrap" in NO_SANDBOX_WARNING
+
+
+def test_a_grader_installed_under_tmp_still_runs_inside_the_sandbox(tmp_path, monkeypatch):
+    """The sandbox gives submissions an empty /tmp of their own; a grader whose checkout or
+    virtual environment lives under /tmp (a CI runner's clone) must still find its own Python
+    and package inside (a clean clone under /tmp once graded every notebook as an error)."""
+    import tempfile
+
+    from balancelab.course.sandbox import run_limited
+
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    pkg = Path(tempfile.mkdtemp(dir="/tmp", prefix="grader_pkg_"))
+    try:
+        (pkg / "probe_mod.py").write_text("X = 'the grader is visible'\n")
+        monkeypatch.syspath_prepend(str(pkg))
+        env = {**os.environ, "PYTHONPATH": str(pkg)}
+        r = run_limited([sys.executable, "-c", "import probe_mod; print(probe_mod.X)"], tmp_path, 60,
+                        env=env, sandbox=True)
+    finally:
+        shutil.rmtree(pkg)
+    assert r.sandboxed and r.stdout == "the grader is visible\n", (r.stdout, r.stderr[-500:])

@@ -2,7 +2,8 @@
 
 On Linux with bubblewrap (``bwrap``; Debian: ``apt-get install bubblewrap``) the command runs
 as the unprivileged user ``nobody`` in new user, PID, IPC, UTS and network namespaces: the
-whole file system is read-only except its scratch folder (and a private, empty ``/tmp``),
+whole file system is read-only except its scratch folder (and a private, empty ``/tmp``, into
+which the grader's own Python and package are bound back read-only when they live there),
 there is no network (only a loopback of its own), and when the command ends or is killed
 every process it started dies with its PID namespace (a detached child included).
 
@@ -71,6 +72,26 @@ def sandbox_available() -> bool:
     return r.returncode == 0
 
 
+def _python_paths_in_tmp() -> list[str]:
+    """Folders under ``/tmp`` that this Python needs (its prefixes, its import path), outermost only.
+
+    The sandbox gives the command an empty ``/tmp`` of its own; a grader whose virtual
+    environment or checkout lives under ``/tmp`` (a CI runner's clone, say) is bound back
+    read-only so that the same interpreter and the same pristine package run inside.
+    """
+    tmp = Path("/tmp").resolve()
+    found = set()
+    for entry in [sys.prefix, sys.base_prefix, sys.exec_prefix, os.path.dirname(sys.executable),
+                  str(Path(__file__).resolve().parents[2]), *sys.path]:
+        if not entry:
+            continue
+        path = Path(entry).resolve()
+        if path != tmp and tmp in path.parents and path.exists():
+            found.add(path)
+    outer = [p for p in found if not any(q in p.parents for q in found)]
+    return sorted(str(p) for p in outer)
+
+
 def sandbox_command(cmd: list[str], scratch: str | Path) -> list[str]:
     """The bubblewrap command line that runs ``cmd`` with only ``scratch`` writable and no network.
 
@@ -91,8 +112,11 @@ def sandbox_command(cmd: list[str], scratch: str | Path) -> list[str]:
     'true'
     """
     scratch = str(Path(scratch).resolve())
+    keep: list[str] = []
+    for path in _python_paths_in_tmp():          # a grader installed under /tmp must stay visible
+        keep += ["--ro-bind", path, path]
     return [bwrap_path() or "bwrap", "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
-            "--tmpfs", "/tmp", "--bind", scratch, scratch, "--unshare-all", "--unshare-user",
+            "--tmpfs", "/tmp", *keep, "--bind", scratch, scratch, "--unshare-all", "--unshare-user",
             "--uid", "65534", "--gid", "65534", "--cap-drop", "ALL", "--die-with-parent", "--new-session",
             "--chdir", scratch, "--setenv", "HOME", scratch, "--"] + list(cmd)
 
