@@ -67,18 +67,25 @@ def planar_point(name: str, value) -> tuple[float, float]:
     return (float(arr[0]), float(arr[1]))
 
 
-def body_index(name: str, value) -> int:
+def body_index(name: str, value, nbodies: int | None = None, *, moving: bool = False) -> int:
     """Return ``value`` as a body index (an int >= 0, 0 the ground), or raise naming ``name``.
+
+    With ``nbodies`` the index must also name one of that many bodies, and with ``moving``
+    one of the moving bodies ``1..nbodies - 1``.
 
     Examples
     --------
-    >>> body_index("body", 2)
-    2
+    >>> body_index("body", 2), body_index("body", 2, 3, moving=True)
+    (2, 2)
     """
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be a body index (int, 0 is the ground), got {value!r}")
     if value < 0:
         raise ValueError(f"{name} must be a body index >= 0 (0 is the ground), got {value}")
+    if nbodies is not None and moving and not 0 < value < nbodies:
+        raise ValueError(f"{name} must be a moving body 1..{nbodies - 1}, got {value!r}")
+    if nbodies is not None and value >= nbodies:
+        raise ValueError(f"{name} must be a body index 0..{nbodies - 1}, got {value!r}")
     return int(value)
 
 

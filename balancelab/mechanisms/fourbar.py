@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 from ..core.design import Design
 from ..core.elements import Joint, Load, Spring
 from ..core.kinematics import Kinematics
-from ..core.validation import finite_real, instance_of, planar_point, real_array
+from ..core.validation import finite_real, instance_of, planar_point, positive_int, real_array
 from .geometry import Point, as_complex, binary_link_point, circle_intersection, rotate
 
 __all__ = ["PIVOTS", "check_assembly", "pivot_name", "FourBarKinematics", "FourBar", "fourbar_joints",
@@ -509,8 +509,7 @@ def coupler_curve(fourbar: FourBar, n: int = 721) -> np.ndarray:
     (5, 2)
     """
     instance_of("fourbar", fourbar, FourBar, "a FourBar")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise ValueError(f"n must be an integer >= 2, got {n!r}")
+    n = positive_int("n", n, 2)
     lo, hi = fourbar.kinematics.q_range[0]
     E = fourbar.state(np.linspace(lo, hi, n))["E"]
     return np.stack([E.real, E.imag], axis=-1)

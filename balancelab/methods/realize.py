@@ -500,10 +500,7 @@ def approximate_lever(mass: float = 2.0, length: float = 0.5, theta_range=(-math
     lo, hi = _working_range(theta_range)
     if realization not in ("coil", "gas"):
         raise ValueError(f"realization must be 'coil' or 'gas', got {realization!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 10:
-        raise ValueError(f"n must be an integer >= 10, got {n!r}")
-    if isinstance(maxiter, bool) or not isinstance(maxiter, (int, np.integer)) or maxiter < 1:
-        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    n, maxiter = positive_int("n", n, 10), positive_int("maxiter", maxiter)
     bounds = _design_bounds(anchor_bounds, attachment_bounds, k_bounds)
     th = np.linspace(lo, hi, n)
     res = _optimize_spring(mass, r, l0, th, bounds, maxiter)

@@ -44,9 +44,7 @@ def _checked_points(design: Design, points) -> dict[str, tuple[int, tuple[float,
             raise TypeError(f"points: every name must be a non-empty string, got {name!r}")
         if not isinstance(spec, (tuple, list)) or len(spec) != 2:
             raise ValueError(f"points[{name!r}] must be (body, (x, y)), got {spec!r}")
-        body = body_index(f"points[{name!r}] body", spec[0])
-        if body >= design.kinematics.nbodies:
-            raise ValueError(f"points[{name!r}] body must be in 0..{design.kinematics.nbodies - 1}, got {body}")
+        body = body_index(f"points[{name!r}] body", spec[0], design.kinematics.nbodies)
         out[name] = (body, planar_point(f"points[{name!r}] point", spec[1]))
     return out
 

@@ -29,7 +29,7 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from ...core.design import Design
-from ...core.validation import finite_real
+from ...core.validation import finite_real, positive_int
 
 __all__ = ["configurations", "pose_jacobian", "spring_forces", "generalized_force", "batch_generalized_force",
            "JointLoads", "joint_tree", "joint_loads", "compare_free_choices"]
@@ -48,8 +48,7 @@ def configurations(design: Design, q=None, n: int = 61) -> np.ndarray:
     """
     if q is not None:
         return design.check_q(q).reshape(-1, design.dof)
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise ValueError(f"n (configurations per coordinate) must be an integer >= 2, got {n!r}")
+    n = positive_int("n (configurations per coordinate)", n, 2)
     axes = []
     for lo, hi in design.q_range:
         full = hi - lo >= 2 * np.pi - 1e-12
@@ -72,18 +71,8 @@ def pose_jacobian(design: Design, q, h: float = 1e-6) -> tuple[np.ndarray, np.nd
     """
     q = design.check_q(q).reshape(-1, design.dof)
     h = finite_real("h (rad)", h, positive=True)
-    P = design.poses(q)
-    J = np.empty(P.shape + (design.dof,))
-    kin = design.kinematics
-    for i in range(design.dof):
-        e = np.zeros(design.dof)
-        e[i] = h
-        pp, okp = kin.poses(q + e)
-        pm, okm = kin.poses(q - e)
-        both = (okp & okm)[:, None, None]
-        fwd = (okp & ~okm)[:, None, None]
-        J[..., i] = np.where(both, (pp - pm) / (2 * h), np.where(fwd, (pp - P) / h, (P - pm) / h))
-    return P, J
+    B, dB = _basis_and_derivative(design, q, lambda P: np.moveaxis(P, 0, -1), h)   # samples last
+    return np.moveaxis(B, -1, 0), np.moveaxis(dB, -2, 0)
 
 
 def _spring_basis(P, a: int, b: int) -> np.ndarray:
@@ -115,7 +104,10 @@ def _load_basis(P, body: int, force) -> np.ndarray:
 
 
 def _basis_and_derivative(design: Design, q, basis, h: float = 1e-6):
-    """``basis(P)`` at ``q`` ``(r, m)`` and its derivative ``(r, m, dof)`` by central differences."""
+    """``basis(P)`` at ``q`` ``(..., m)`` and its derivative ``(..., m, dof)`` by central differences.
+
+    A one-sided difference is used where a neighbour is unreachable (none where both are).
+    """
     kin = design.kinematics
     P = design.poses(q)
     B = basis(P)
@@ -126,7 +118,7 @@ def _basis_and_derivative(design: Design, q, basis, h: float = 1e-6):
         pp, okp = kin.poses(q + e)
         pm, okm = kin.poses(q - e)
         Bp, Bm = basis(np.where(okp[:, None, None], pp, P)), basis(np.where(okm[:, None, None], pm, P))
-        dB[..., i] = (Bp - Bm) / (h * (okp.astype(float) + okm.astype(float)))
+        dB[..., i] = (Bp - Bm) / (h * np.maximum(okp.astype(float) + okm.astype(float), 1.0))
     return B, dB
 
 

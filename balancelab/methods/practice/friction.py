@@ -24,7 +24,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import gravity_load
-from ...core.validation import finite_real, planar_point
+from ...core.validation import body_index, finite_real, planar_point
 from .forces import configurations, generalized_force, joint_loads, joint_tree, pose_jacobian
 
 __all__ = ["joint_friction", "holding_torques", "stays_put", "FrictionBand", "friction_band", "hand_force"]
@@ -134,8 +134,7 @@ def friction_band(design: Design, friction, body: int, point, q=None, n: int = 6
     """
     tau = joint_friction(design, friction)
     point = planar_point("point (m)", point)
-    if isinstance(body, bool) or not isinstance(body, (int, np.integer)) or not 0 < body < len(design.bodies):
-        raise ValueError(f"body must be a moving body 1..{len(design.bodies) - 1}, got {body!r}")
+    body = body_index("body", body, len(design.bodies), moving=True)
     q, t0 = holding_torques(design, q, n)
     t1 = joint_loads(design.replace(loads=[gravity_load(int(body), point, 1.0)], springs=()), q).torque
     lo, hi = -np.inf, np.inf

@@ -28,6 +28,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import Spring, gravity_load
+from ...core.validation import body_index
 from .forces import configurations
 
 __all__ = ["add_payload", "rebalance", "adjustment_work"]
@@ -43,9 +44,7 @@ def add_payload(design: Design, mass: float, body: int, point) -> Design:
     >>> len(d.loads), d.balance_report().balanced
     (2, False)
     """
-    load = gravity_load(body, point, mass, name="payload")
-    if not 0 < load.body < len(design.bodies):
-        raise ValueError(f"body must be a moving body 1..{len(design.bodies) - 1}, got {body!r}")
+    load = gravity_load(body_index("body", body, len(design.bodies), moving=True), point, mass, name="payload")
     return design.replace(loads=[*design.loads, load], name=f"{design.name} + {mass:g} kg payload")
 
 
