@@ -85,6 +85,20 @@ NEEDS_CHROMIUM = pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is
                                                              "script installs it with apt: apt-get install chromium)")
 
 
+SUBMISSION_HEADER = "import balancelab as bl\nfrom balancelab.course.check import check\n"
+
+
+def submission_notebook(lab: str, *sources: str):
+    """A student's submission for ``lab``: the labs' import cell, then one code cell per source."""
+    import nbformat
+
+    nb = nbformat.v4.new_notebook()
+    nb.metadata = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
+                   "balancelab": {"lab": lab, "version": "student"}}
+    nb.cells = [nbformat.v4.new_code_cell(s) for s in (SUBMISSION_HEADER,) + sources]
+    return nb
+
+
 def lab8_reference_springs() -> dict:
     """A right answer to lab 8's task 8.1: the library's spring selection for the lab's arm."""
     from balancelab.course.check import lab8

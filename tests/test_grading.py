@@ -10,18 +10,10 @@ import pytest
 
 from balancelab.course.check import tasks
 from balancelab.course.grading import GradeRow, grade_namespace, summary, write_csv
+from conftest import submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 
-HEADER = "import balancelab as bl\nfrom balancelab.course.check import check\n"
-
-
-def _nb(lab, *sources):
-    nb = nbformat.v4.new_notebook()
-    nb.metadata = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
-                   "balancelab": {"lab": lab, "version": "student"}}
-    nb.cells = [nbformat.v4.new_code_cell(s) for s in (HEADER,) + sources]
-    return nb
 
 
 def _write(folder, name, nb):
@@ -39,14 +31,14 @@ ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters
 @pytest.fixture(scope="module")
 def graded(tmp_path_factory):
     sub = tmp_path_factory.mktemp("submissions")
-    _write(sub, "alice_lab2.ipynb", _nb("lab2", K_LAMP, ENERGY, LEVER_SPRING))
-    _write(sub, "bob_lab2.ipynb", _nb("lab2", "k_lamp = 12.0", "raise NotImplementedError('todo')",
+    _write(sub, "alice_lab2.ipynb", submission_notebook("lab2", K_LAMP, ENERGY, LEVER_SPRING))
+    _write(sub, "bob_lab2.ipynb", submission_notebook("lab2", "k_lamp = 12.0", "raise NotImplementedError('todo')",
                                       "lever_spring = {'k': 310.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"))
-    _write(sub, "carol_lab2.ipynb", _nb("lab2", K_LAMP, "while True:\n    pass", ENERGY))
+    _write(sub, "carol_lab2.ipynb", submission_notebook("lab2", K_LAMP, "while True:\n    pass", ENERGY))
     (sub / "dave_lab2.ipynb").write_text("{not json")
-    _write(sub, "erin_lab2.ipynb", _nb("lab2", K_LAMP, "import os\nos._exit(1)"))
-    _write(sub, "frank_notes.ipynb", _nb("", "x = 1"))
-    _write(sub, "group/gina_lab1.ipynb", _nb("lab1", "r_c = '22.5 cm'", "m_equivalent = (0.72, 0.48)"))
+    _write(sub, "erin_lab2.ipynb", submission_notebook("lab2", K_LAMP, "import os\nos._exit(1)"))
+    _write(sub, "frank_notes.ipynb", submission_notebook("", "x = 1"))
+    _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", "r_c = '22.5 cm'", "m_equivalent = (0.72, 0.48)"))
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
     out = sub.parent / "grades.csv"
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),

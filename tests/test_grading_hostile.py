@@ -22,10 +22,10 @@ import pytest
 from balancelab.course.check import tasks
 from balancelab.course.grading import grade_answers, resolve_lab, shard
 from balancelab.course.sandbox import sandbox_available
+from conftest import submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 MARK = f"h3-hostile-{uuid.uuid4().hex[:12]}"
-HEADER = "import balancelab as bl\nfrom balancelab.course.check import check\n"
 K_LAMP = "k_lamp = bl.lecture.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters['k']"
 LEVER = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
 ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
@@ -51,14 +51,6 @@ assert arm_design.balance_report().balanced
 """
 
 
-def _nb(lab, *sources):
-    nb = nbformat.v4.new_notebook()
-    nb.metadata = {"kernelspec": {"name": "python3", "display_name": "Python 3", "language": "python"},
-                   "balancelab": {"lab": lab, "version": "student"}}
-    nb.cells = [nbformat.v4.new_code_cell(s) for s in (HEADER,) + sources]
-    return nb
-
-
 def _digest(folder: Path) -> dict:
     return {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in folder.rglob("*") if p.is_file()}
 
@@ -79,31 +71,31 @@ def _marked_processes() -> list[str]:
 def _submissions(sub: Path, host: Path) -> None:
     victim, pwned = host / "victim.txt", host / "pwned.txt"
     notebooks = {
-        "alice_lab2": _nb("lab2", K_LAMP, ENERGY, LEVER),
-        "bob_lab2": _nb("lab2", "k_lamp = 12.0", "lever_energy = 1.0", "lever_spring = {'k': 310.0, "
+        "alice_lab2": submission_notebook("lab2", K_LAMP, ENERGY, LEVER),
+        "bob_lab2": submission_notebook("lab2", "k_lamp = 12.0", "lever_energy = 1.0", "lever_spring = {'k': 310.0, "
                         "'a': (0.3, 0.0), 'b': (0.0, 0.2)}"),
-        "half_lab2": _nb("lab2", K_LAMP, "lever_energy = ...", "lever_spring = ..."),
-        "crash_lab2": _nb("lab2", "1 / 0", K_LAMP),
-        "loop_lab2": _nb("lab2", K_LAMP, "while True:\n    pass", ENERGY),
-        "sigint_lab2": _nb("lab2", K_LAMP, "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\n"
+        "half_lab2": submission_notebook("lab2", K_LAMP, "lever_energy = ...", "lever_spring = ..."),
+        "crash_lab2": submission_notebook("lab2", "1 / 0", K_LAMP),
+        "loop_lab2": submission_notebook("lab2", K_LAMP, "while True:\n    pass", ENERGY),
+        "sigint_lab2": submission_notebook("lab2", K_LAMP, "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\n"
                            "while True:\n    pass", ENERGY),
-        "writer_lab2": _nb("lab2", f"import os\nopen({str(pwned)!r}, 'w').write('x')",
+        "writer_lab2": submission_notebook("lab2", f"import os\nopen({str(pwned)!r}, 'w').write('x')",
                            f"os.remove({str(victim)!r})", K_LAMP),
-        "detach_lab2": _nb("lab2", "import subprocess, sys\nsubprocess.Popen([sys.executable, '-c', "
+        "detach_lab2": submission_notebook("lab2", "import subprocess, sys\nsubprocess.Popen([sys.executable, '-c', "
                            f"'import time; time.sleep(600)', {MARK!r}], start_new_session=True)\n"
                            "import os\nif os.fork() == 0:\n    os.setsid()\n"
                            f"    os.execv(sys.executable, [sys.executable, '-c', 'import time; time.sleep(600)', "
                            f"{MARK + '-fork'!r}])", K_LAMP),
-        "patch_lab2": _nb("lab2", "import balancelab.course.check as c\nfrom balancelab.course.check import Verdict\n"
+        "patch_lab2": submission_notebook("lab2", "import balancelab.course.check as c\nfrom balancelab.course.check import Verdict\n"
                           "c.check = lambda task, answer: Verdict(task, True, 'ok', '', 100.0, 1.0)\n"
                           "check = c.check", "k_lamp = 12.0\nassert check('2.1', k_lamp).score == 100"),
-        "forge_lab2": _nb("lab2", "from balancelab.course.check import Verdict\n"
+        "forge_lab2": submission_notebook("lab2", "from balancelab.course.check import Verdict\n"
                           "k_lamp = Verdict('2.1', True, 'ok', '', 100.0, 1.0)\n"
                           "lever_energy = {'score': 100}"),
-        "fake_lab4": _nb("lab4", FAKE_DESIGN),
-        "zed_lab1": _nb("lab2", K_LAMP),
-        "pat_lab2": _nb("lab2", PERSONAL.format(sid="pat")),
-        "copy_lab2": _nb("lab2", PERSONAL.format(sid="pat")),
+        "fake_lab4": submission_notebook("lab4", FAKE_DESIGN),
+        "zed_lab1": submission_notebook("lab2", K_LAMP),
+        "pat_lab2": submission_notebook("lab2", PERSONAL.format(sid="pat")),
+        "copy_lab2": submission_notebook("lab2", PERSONAL.format(sid="pat")),
     }
     for name, nb in notebooks.items():
         nbformat.write(nb, sub / f"{name}.ipynb")
@@ -239,7 +231,7 @@ def test_without_the_sandbox_the_grader_warns_and_still_grades(tmp_path):
         r = run_limited([sys.executable, "-c", "print(7)"], tmp_path, 60, sandbox=False)
     assert r.stdout == "7\n" and not r.sandboxed
     path = tmp_path / "amy_lab2.ipynb"
-    nbformat.write(_nb("lab2", K_LAMP), path)
+    nbformat.write(submission_notebook("lab2", K_LAMP), path)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # grade_notebook notes it in the row instead of warning per notebook
         row = grade_notebook(path, sandbox=False, cell_timeout=30, notebook_timeout=120)
