@@ -54,15 +54,18 @@ def test_wahl_factor_formula_and_its_closeness_to_bergstrasser():
 
 
 def test_extension_spring_zfl_condition_and_error():
-    s = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
+    s = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0, hooks=False)
     assert s.k == pytest.approx(81.7e9 * 1e-3 / (8 * 8 ** 3 * 40), rel=1e-14)
     assert s.body_length == pytest.approx(41e-3, rel=1e-14)
+    # two standard hooks add their inside diameters D - d: 41 + 2 * 7 mm between the load points
+    hooked = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
+    assert hooked.body_length == pytest.approx(55e-3, rel=1e-14) and hooked.coil_length == s.body_length
     ell = s.body_length - 2.0 / s.k
     L = np.linspace(s.body_length, 0.3, 7)
     assert np.allclose(s.force(L), 2.0 + s.k * (L - s.body_length), rtol=1e-13)
     assert np.allclose(sp.zfl_force_error(s, L), -s.k * ell, rtol=1e-12)
     assert np.isnan(s.force(0.5 * s.body_length)) and not s.is_zfl
-    zfl = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=s.k * s.body_length)
+    zfl = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=s.k * s.body_length, hooks=False)
     assert zfl.is_zfl and np.allclose(sp.zfl_force_error(zfl, L), 0.0, atol=1e-12)
 
 
@@ -74,13 +77,65 @@ def test_allowables_and_max_force():
     assert sp.allowable_stress(d, sp.STAINLESS_302) == pytest.approx(0.35 * sp.tensile_strength(d, sp.STAINLESS_302))
     cyc = [sp.allowable_stress(d, cycles=n) / sut for n in (1e3, 1e5, 1e6, 1e7, 1e9)]
     assert cyc == pytest.approx([0.36, 0.36, 0.33, 0.30, 0.30])
-    s = sp.ExtensionSpring(d, 10e-3, 30, initial_tension=1.0)
+    s = sp.ExtensionSpring(d, 10e-3, 30, initial_tension=1.0, hooks=False)   # the body alone
     for cycles in (None, 1e6):
         assert s.stress(s.max_force(cycles)) == pytest.approx(sp.allowable_stress(d, cycles=cycles), rel=1e-12)
     assert s.max_deflection() == pytest.approx((s.max_force() - 1.0) / s.k)
     lo, hi = s.initial_tension_range()
     tlo, thi = sp.initial_stress_range(s.index)
     assert lo == pytest.approx(tlo * math.pi * d ** 3 / (8 * 10e-3)) and hi > lo
+
+
+def test_hook_stresses_of_shigley_example_10_7_by_hand_in_inches():
+    """Example 10-7's hooks: d = 0.035 in, D = 0.213 in, r1 = 0.106 in, r2 = 0.089 in (eqs. 10-34 to 10-36)."""
+    d, D, r1, r2, F = 0.035, 0.213, 0.106, 0.089, 5.0            # inches, lbf
+    C1, C2 = 2 * r1 / d, 2 * r2 / d
+    KA = (4 * C1 ** 2 - C1 - 1) / (4 * C1 * (C1 - 1))
+    KB = (4 * C2 - 1) / (4 * C2 - 4)
+    assert (round(KA, 2), round(KB, 2)) == (1.14, 1.18)          # the factors the example prints
+    sigma_A = F * (KA * 16 * D / (math.pi * d ** 3) + 4 / (math.pi * d ** 2))    # psi
+    tau_B = KB * 8 * F * D / (math.pi * d ** 3)
+    sA, tB = sp.hook_stresses(F * LBF, d * INCH, D * INCH, bend_radius=r1 * INCH, root_radius=r2 * INCH)
+    assert sA / PSI == pytest.approx(sigma_A, rel=1e-12) and tB / PSI == pytest.approx(tau_B, rel=1e-12)
+    # both factors fade to 1 for gentle bends, and the stresses are linear in the pull
+    assert sp.hook_bending_factor(1e6) == pytest.approx(1, abs=1e-5) and sp.hook_torsion_factor(1e6) == pytest.approx(1, abs=1e-5)
+    s2, t2 = sp.hook_stresses(2 * F * LBF, d * INCH, D * INCH, bend_radius=r1 * INCH, root_radius=r2 * INCH)
+    assert (s2, t2) == pytest.approx((2 * sA, 2 * tB), rel=1e-14)
+
+
+def test_standard_hooks_govern_the_lamps_static_spring():
+    """Chapter 8's first choice for spring 1 (1.8 mm wire, D = 25.2 mm, 73.5 N at the longest stroke).
+
+    By hand: tau = 8 F D / (pi d^3) = 808.8 MPa; C = 14: K_A = 769/728, so
+    sigma_A = 2 K_A tau + 4 F / (pi d^2) = 1708.7 + 28.9 = 1737.6 MPa > 0.75 S_ut = 1523 MPa;
+    tau_B = 1.25 tau = 1011 MPa > 0.40 S_ut = 812 MPa, while the body (K_W tau = 891 MPa) is within 45 %.
+    """
+    s = sp.ExtensionSpring(1.8e-3, 25.2e-3, 41)
+    F = 808.8e6 * math.pi * 1.8e-3 ** 3 / (8 * 25.2e-3)
+    st = s.stresses(F)
+    assert st["hook_bending"] / 1e6 == pytest.approx(1737.6, abs=0.5)
+    assert st["hook_torsion"] / 1e6 == pytest.approx(1011.0, abs=0.5)
+    sut = sp.tensile_strength(1.8e-3)
+    assert st["body"] < 0.45 * sut and st["hook_bending"] > 0.75 * sut and st["hook_torsion"] > 0.40 * sut
+    assert s.max_force() < F < sp.ExtensionSpring(1.8e-3, 25.2e-3, 41, hooks=False).max_force()
+    assert s.governing() == "hook_torsion"
+    # cyclic allowables of the hooks (table 10-8), never above the static ones
+    frac = [float(sp.allowable_stress(1.8e-3, cycles=n, where=w) / sut)
+            for w in ("hook_torsion", "hook_bending") for n in (1e5, 1e6, 1e7)]
+    assert frac == pytest.approx([0.34, 0.30, 0.28, 0.51, 0.47, 0.45])
+    with pytest.raises(ValueError, match="where"):
+        sp.allowable_stress(1e-3, where="coil")
+
+
+def test_hooks_count_in_the_free_length():
+    """1 mm wire, C = 10, 40 coils, largest preferred F_i: l = 41 + 2 * 9 - F_i / k mm (43.5), bare 25.5 mm."""
+    bare = sp.ExtensionSpring(1e-3, 10e-3, 40, hooks=False)
+    Fi = bare.initial_tension_range()[1]
+    hooked = sp.ExtensionSpring(1e-3, 10e-3, 40, initial_tension=Fi)
+    bare = sp.ExtensionSpring(1e-3, 10e-3, 40, initial_tension=Fi, hooks=False)
+    assert 1000 * bare.equivalent_free_length == pytest.approx(25.5, abs=0.05)
+    assert 1000 * hooked.equivalent_free_length == pytest.approx(43.5, abs=0.05)
+    assert hooked.equivalent_free_length - bare.equivalent_free_length == pytest.approx(2 * (10e-3 - 1e-3))
 
 
 # -------------------------------------------------------------------- selection
@@ -126,6 +181,52 @@ def test_selection_refuses_what_no_spring_can_do():
         se.select_spring(100.0, (0.3, 0.2))
     with pytest.raises(ValueError, match="retune"):
         se.select_springs(lever(), 1.0, mode="direct", retune=True)
+
+
+def test_every_selected_spring_survives_its_hooks_and_the_bare_choice_does_not():
+    lamp = bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+    strokes = se.spring_strokes(lamp, 41)
+    for cycles in (None, 1e5):
+        hooked = se.select_springs(lamp, 0.1, n=41, cycles=cycles)
+        bare = se.select_springs(lamp, 0.1, n=41, cycles=cycles, family=se.spring_family(hooks=False))
+        for (name, c), (_, longest) in zip(hooked.choices.items(), strokes):
+            s = c.spring
+            assert s.hooks and s.k * longest <= s.max_force(cycles) * (1 + 1e-12)
+            for where, stress in s.stresses(s.k * longest).items():
+                assert stress <= sp.allowable_stress(s.wire_diameter, cycles=cycles, where=where) * (1 + 1e-12)
+        b1 = bare.choices["k1"].spring
+        with_hooks = sp.ExtensionSpring(b1.wire_diameter, b1.coil_diameter, b1.active_coils, b1.initial_tension)
+        assert with_hooks.k * strokes[0][1] > with_hooks.max_force(cycles)    # it would break at a hook
+
+
+def test_pulley_radius_and_friction_in_the_selection():
+    d = bl.realize.pulley_lever(radius=0.0)       # the lecture's link on [-90, 90] deg, string over a pulley
+    rho = 0.01
+    sel = se.select_springs(d, budget=1.0, n=181, pulley_radius=rho)
+    assert sel.design.springs[0].pulley.radius == rho
+    # the exact string model of chapter 3, differentiated independently (np.gradient on a fine grid)
+    err = bl.realize.pulley_balance_error(sel.design, rho)
+    assert np.abs(sel.residual).max() == pytest.approx(err.residual_torque, rel=2e-3)
+    assert se.select_springs(d, budget=1.0, n=181).worst < np.abs(sel.residual).max()
+    # a pulley losing 3 % of the tension adds 3 % of the spring's own torque k b c |cos t| (point pulley)
+    fr_sel = se.select_springs(d, budget=1.0, n=37, pulley_friction=0.03)
+    k = fr_sel.choices["k"].spring.k
+    assert np.allclose(fr_sel.friction[:, 0], 0.03 * k * 0.3 * 0.2 * np.abs(np.cos(fr_sel.q[:, 0])), atol=1e-6)
+    assert fr_sel.worst == pytest.approx(np.max(np.abs(fr_sel.residual) + fr_sel.friction))
+    with pytest.raises(ValueError, match="pulley_friction"):
+        se.select_springs(d, 1.0, pulley_friction=1.0)
+    with pytest.raises(ValueError, match="mode='pulley'"):
+        se.select_springs(d, 1.0, mode="direct", pulley_radius=0.01)
+
+
+def test_largest_pulley_radius_is_the_edge_of_the_budget():
+    d = lever()
+    rho = se.largest_pulley_radius(d, 0.15, n=37)
+    assert 0 < rho < 0.05
+    assert se.select_springs(d, 0.15, n=37, pulley_radius=rho).within_budget
+    assert not se.select_springs(d, 0.15, n=37, pulley_radius=rho + 2e-5).within_budget
+    assert se.largest_pulley_radius(d, 0.15, n=37, pulley_friction=0.02) < rho   # friction spends budget too
 
 
 # -------------------------------------------------------------------- tolerances

@@ -127,6 +127,10 @@ def built_arm(springs) -> Design:
     return ideal.replace(springs=new, name="lab 8 lamp arm with real springs")
 
 
+_WHERE = {"body": "first in the body", "hook_torsion": "first at the hooks' roots, in torsion",
+          "hook_bending": "first at the hooks' bends, in bending"}
+
+
 def spring_problems(springs) -> list[str]:
     """Why each submitted spring cannot do its job over a pulley (empty when all can).
 
@@ -141,9 +145,11 @@ def spring_problems(springs) -> list[str]:
 
     Examples
     --------
-    >>> spring_problems({"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 4.0},
-    ...                  "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 2.5}})
-    []
+    >>> for problem in spring_problems({"k1": {"d": 1.8e-3, "D": 25.2e-3, "Na": 41, "F_i": 4.0},
+    ...                                 "k2": {"d": 1e-3, "D": 10e-3, "Na": 105, "F_i": 2.5}}):
+    ...     print(problem)
+    k1: the wire is overstressed at the longest stroke (first at the hooks' roots, in torsion)
+    k2: the wire is overstressed at the longest stroke (first at the hooks' roots, in torsion)
     """
     real = real_springs(springs)
     strokes = dict(zip(("k1", "k2"), spring_strokes(lab8_arm(), 41)))
@@ -156,7 +162,7 @@ def spring_problems(springs) -> list[str]:
         if shortest < s.initial_tension / s.k:
             problems.append(f"{name}: the string goes slack near the shortest stroke (needs x >= F_i / k)")
         if s.k * longest > s.max_force():
-            problems.append(f"{name}: the wire is overstressed at the longest stroke")
+            problems.append(f"{name}: the wire is overstressed at the longest stroke ({_WHERE[s.governing()]})")
     return problems
 
 
@@ -188,7 +194,8 @@ def rate_error_arm(k1_error: float = 0.0, k2_error: float = 0.0) -> Design:
 
 @register_task("8.1", "real springs (over pulleys) that keep the lamp arm within 0.1 N m (open design)",
                "my_springs", "design", f"a dict {_SPRING_FORM} (SI units); each spring's initial tension in "
-               "the range its index allows, taut and within its allowable stress over its stroke; the built "
+               "the range its index allows, taut and within the allowable stresses of its body and its standard hooks "
+               "over its stroke; the built "
                "arm's residual generalized force at most 0.1 N m", points=2)
 def _t81(answer):
     problems = spring_problems(answer)
@@ -200,7 +207,7 @@ def _t81(answer):
         return (False, f"The built arm's largest residual is {worst:.3g} N m, over the {LAB8_BUDGET:g} N m budget.",
                 "Bring each spring's rate closer to the ideal one.")
     return True, (f"Largest residual {worst:.3g} N m, within {LAB8_BUDGET:g} N m; every spring stays taut and "
-                  "within its allowable stress."), ""
+                  "within the allowable stresses of its body and hooks."), ""
 
 
 @register_task("8.2", "95 % quantile of the worst residual of built arms with your springs", "tolerance_study",

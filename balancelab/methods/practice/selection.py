@@ -17,11 +17,17 @@ force is closest to the ideal ``k L`` over that stroke:
   error ``(k_real - k) L - k_real l`` includes the equivalent free length ``l``, and the
   spring must never close (``L >= L_b``).
 
-Both modes keep the largest force within the allowable stress (static or for a number
-of cycles). :func:`select_springs` does this for every ZFL spring, optionally moves the
-anchors to make the real rates balance exactly (``retune=True``, with
-:func:`balancelab.methods.practice.payload.rebalance`) and returns the residual torque
-curve of the built design. Layer: methods.
+Both modes keep the largest force within the allowable stresses of the body *and of the
+hooks* (static or for a number of cycles; standard hooks by default, whose length also
+counts in the direct mode's body length). :func:`select_springs` does this for every ZFL
+spring, optionally moves the anchors to make the real rates balance exactly
+(``retune=True``, with :func:`balancelab.methods.practice.payload.rebalance`) and returns
+the residual torque curve of the built design. Over a pulley it includes the pulley's
+radius (the exact string model of :func:`balancelab.methods.realize.pulley_energy`) and
+its friction: a pulley that loses the fraction ``pulley_friction`` of the string's
+tension changes each spring's generalized force by up to that fraction, in the sense
+that opposes the motion. :func:`largest_pulley_radius` says which pulleys fit a budget.
+Layer: methods.
 """
 from __future__ import annotations
 
@@ -34,39 +40,51 @@ from ...core.design import Design
 from ...core.elements import Pulley, Spring
 from ...core.validation import finite_real
 from ..lecture.lever import single_link_spring
+from ..realize import pulley_energy
 from .forces import configurations, generalized_force
 from .payload import rebalance
-from .springs import (MUSIC_WIRE, WIRE_DIAMETERS, ExtensionSpring, Material, allowable_stress,
+from .springs import (MUSIC_WIRE, WIRE_DIAMETERS, ExtensionSpring, Material, allowable_stress, hook_stresses,
                       initial_stress_range, wahl_factor)
 
 __all__ = ["spring_family", "SpringChoice", "select_spring", "Selection", "spring_strokes", "select_springs",
-           "real_spring_lever"]
+           "largest_pulley_radius", "real_spring_lever"]
 
 
 def spring_family(material: Material = MUSIC_WIRE, wire_diameters=WIRE_DIAMETERS,
-                  indices=np.arange(4.0, 14.01, 0.5), active_coils=np.arange(5, 401)) -> dict:
+                  indices=np.arange(4.0, 14.01, 0.5), active_coils=np.arange(5, 401), hooks: bool = True) -> dict:
     """Every combination of wire diameter, index and active coils, with its rate and limits.
 
     Returns
     -------
     dict of numpy.ndarray
         ``d``, ``D`` (m), ``Na``, ``k`` (N/m), ``Fi_low``, ``Fi_high`` (N, preferred initial
-        tension), ``body_length`` (m), ``F_allow`` (N, static allowable pull).
+        tension), ``body_length`` (m, between the load points: coils and hooks) and the
+        stresses per newton of pull (Pa/N) of the ``body`` and, with ``hooks``, of the
+        ``hook_torsion`` and ``hook_bending`` (``"per_newton"``); ``material``; ``hooks``.
 
     Examples
     --------
     >>> f = spring_family(wire_diameters=[1e-3], indices=[8.0], active_coils=[40])
-    >>> round(float(f["k"][0]), 2)
-    498.66
+    >>> round(float(f["k"][0]), 2), round(float(f["body_length"][0]), 4)
+    (498.66, 0.055)
     """
     d, C, Na = (a.ravel() for a in np.meshgrid(np.asarray(wire_diameters, float), np.asarray(indices, float),
                                                 np.asarray(active_coils, float), indexing="ij"))
     D = C * d
     lo, hi = initial_stress_range(C)
     area = np.pi * d ** 3 / (8 * D)
+    per_newton = {"body": wahl_factor(C) / area}
+    if hooks:
+        per_newton["hook_bending"], per_newton["hook_torsion"] = hook_stresses(1.0, d, D)
     return {"d": d, "D": D, "Na": Na, "k": material.shear_modulus * d / (8 * C ** 3 * Na),
-            "Fi_low": lo * area, "Fi_high": hi * area, "body_length": d * (Na + 1),
-            "F_unit": area / wahl_factor(C), "material": material}
+            "Fi_low": lo * area, "Fi_high": hi * area, "body_length": d * (Na + 1) + (2 * (D - d) if hooks else 0.0),
+            "per_newton": per_newton, "material": material, "hooks": bool(hooks)}
+
+
+def _allowable_force(f: dict, cycles) -> np.ndarray:
+    """Largest pull (N) of every candidate within the allowables of its body and hooks."""
+    return np.min([allowable_stress(f["d"], f["material"], cycles, where) / stress
+                   for where, stress in f["per_newton"].items()], axis=0)
 
 
 class SpringChoice(NamedTuple):
@@ -125,7 +143,7 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
         raise ValueError(f"mode must be 'pulley' or 'direct', got {mode!r}")
     f = spring_family() if family is None else family
     kc, Lb = f["k"], f["body_length"]
-    F_allow = allowable_stress(f["d"], f["material"], cycles) * f["F_unit"]
+    F_allow = _allowable_force(f, cycles)
     if mode == "pulley":
         Fi = f["Fi_low"]
         ok = (lmin >= Fi / kc) & (kc * lmax <= F_allow)
@@ -143,15 +161,18 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
     good = err_ok <= max(rate_tolerance, float(err_ok.min()))
     mass = np.where(good, f["d"] ** 2 * f["D"] * f["Na"], np.inf)  # the least wire among the good ones
     i = int(np.argmin(mass))
-    spring = ExtensionSpring(float(f["d"][i]), float(f["D"][i]), float(f["Na"][i]), float(Fi[i]), f["material"])
+    spring = ExtensionSpring(float(f["d"][i]), float(f["D"][i]), float(f["Na"][i]), float(Fi[i]), f["material"],
+                             hooks=f["hooks"])
     return SpringChoice(spring, float(err[i]), mode)
 
 
 class Selection(NamedTuple):
     """Result of :func:`select_springs`: the choices, the built design and its residual torque curve.
 
-    ``residual`` (m, dof): ``dV/dq`` of the built design (N m per rad) at ``q``; ``worst``
-    its largest magnitude; ``within_budget``: ``worst <= budget``.
+    ``residual`` (m, dof): ``dV/dq`` of the built design (N m per rad) at ``q``, with the
+    pulleys' radius; ``friction`` (m, dof): the largest extra generalized force the
+    pulleys' friction can add at ``q`` (either sense); ``worst`` the largest
+    ``|residual| + friction``; ``within_budget``: ``worst <= budget``.
     """
 
     choices: dict
@@ -160,6 +181,7 @@ class Selection(NamedTuple):
     residual: np.ndarray
     worst: float
     within_budget: bool
+    friction: np.ndarray | None = None
 
 
 def spring_strokes(design: Design, n: int = 61) -> list[tuple[float, float]]:
@@ -177,16 +199,42 @@ def spring_strokes(design: Design, n: int = 61) -> list[tuple[float, float]]:
     return [(float(L[:, i].min()), float(L[:, i].max())) for i in range(len(design.springs))]
 
 
-def _built(s: Spring, choice: SpringChoice) -> Spring:
+def _built(s: Spring, choice: SpringChoice, radius: float = 0.0) -> Spring:
     real = choice.spring
     if choice.mode == "pulley":
-        realization = s.realization if s.pulley is not None else (Pulley() if s.a.body == 0 else s.realization)
+        if s.pulley is not None:
+            realization = Pulley(radius, s.pulley.spring_direction, s.pulley.turn)
+        else:
+            realization = Pulley(radius) if s.a.body == 0 else s.realization
         return Spring(real.k, 0.0, s.a, s.b, name=s.name, realization=realization)
     return Spring(real.k, real.equivalent_free_length, s.a, s.b, name=s.name, realization="coil")
 
 
+def _pulley_generalized_force(design: Design, q: np.ndarray, h: float = 1e-6) -> np.ndarray:
+    """``dV/dq`` (m, dof) of the exact string-over-pulley energy, by differences kept inside the range."""
+    out = np.empty_like(q)
+    lo, hi = design.q_range[:, 0], design.q_range[:, 1]
+    for j in range(q.shape[1]):
+        up, down = q.copy(), q.copy()
+        up[:, j] = np.minimum(q[:, j] + h, hi[j])
+        down[:, j] = np.maximum(q[:, j] - h, lo[j])
+        out[:, j] = (pulley_energy(design, up) - pulley_energy(design, down)) / (up[:, j] - down[:, j])
+    return out
+
+
+def _pulley_friction(design: Design, q: np.ndarray, fraction: float) -> np.ndarray:
+    """Largest generalized force (m, dof) that pulleys losing ``fraction`` of the tension add."""
+    band = np.zeros_like(q)
+    for i, s in enumerate(design.springs):
+        if s.pulley is not None and fraction > 0:
+            alone = design.replace(springs=[s], loads=[])
+            band += fraction * np.abs(_pulley_generalized_force(alone, q))
+    return band
+
+
 def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycles: float | None = None,
-                   retune: bool = False, family: dict | None = None, n: int = 61) -> Selection:
+                   retune: bool = False, family: dict | None = None, n: int = 61, pulley_radius: float = 0.0,
+                   pulley_friction: float = 0.0) -> Selection:
     """Real springs for every ZFL spring of ``design`` and the residual torque of the result.
 
     Parameters
@@ -205,6 +253,10 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
         Candidates (:func:`spring_family`).
     n : int
         Configurations per coordinate.
+    pulley_radius : float
+        Radius (m), >= 0, of every pulley (pulley mode); 0 is the ideal point anchor.
+    pulley_friction : float
+        Fraction of the string's tension the pulley's bearing loses, in [0, 1) (pulley mode).
 
     Returns
     -------
@@ -218,6 +270,12 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
     True
     """
     budget = finite_real("budget (N m)", budget, positive=True)
+    radius = finite_real("pulley_radius (m)", pulley_radius, nonnegative=True)
+    loss = finite_real("pulley_friction", pulley_friction, nonnegative=True)
+    if loss >= 1:
+        raise ValueError(f"pulley_friction must be in [0, 1), got {loss}")
+    if mode != "pulley" and (radius > 0 or loss > 0):
+        raise ValueError("pulley_radius and pulley_friction need mode='pulley'")
     if not any(s.is_zfl for s in design.springs):
         raise ValueError(f"{design.name} has no ZFL spring to realize")
     if retune and mode != "pulley":
@@ -227,7 +285,7 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
     for i, s in enumerate(design.springs):
         if s.is_zfl:
             choices[s.name or str(i)] = select_spring(s.k, strokes[i], mode=mode, cycles=cycles, family=family)
-            built[i] = _built(s, choices[s.name or str(i)])
+            built[i] = _built(s, choices[s.name or str(i)], radius)
     real = design.replace(springs=built, name=f"{design.name}, real springs ({mode})")
     if retune:
         real = rebalance(real, "anchor", [i for i, s in enumerate(design.springs) if s.is_zfl], n=n)
@@ -238,8 +296,62 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
             if c is not None and (lo < c.spring.initial_tension / c.spring.k or c.spring.k * hi > c.spring.max_force(cycles)):
                 raise ValueError(f"after retuning, spring {s.name or i} leaves its safe stroke ({lo:.4g}-{hi:.4g} m)")
     q, Q = generalized_force(real, None, n)
-    worst = float(np.abs(Q).max())
-    return Selection(choices, real, q, Q, worst, worst <= budget)
+    if radius > 0:
+        Q = _pulley_generalized_force(real, q)
+    band = _pulley_friction(real, q, loss)
+    worst = float(np.max(np.abs(Q) + band))
+    return Selection(choices, real, q, Q, worst, worst <= budget, band)
+
+
+def largest_pulley_radius(design: Design, budget: float, *, pulley_friction: float = 0.0,
+                          cycles: float | None = None, n: int = 41, largest: float = 0.05) -> float:
+    """Largest pulley radius (m) with which the selected real springs keep ``design`` within ``budget``.
+
+    The springs are chosen as by :func:`select_springs` (pulley mode); the radius is then
+    found by bisection on the exact string model, friction included. 0 when even ideal
+    point pulleys do not fit.
+
+    Parameters
+    ----------
+    design : Design
+    budget : float
+        Residual budget (N m per rad), > 0.
+    pulley_friction : float
+        As in :func:`select_springs`.
+    cycles : float, optional
+    n : int
+        Configurations per coordinate.
+    largest : float
+        Upper end (m) of the search, > 0.
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> rho = largest_pulley_radius(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2), 0.15)
+    >>> 0 < rho < 0.05
+    True
+    """
+    largest = finite_real("largest (m)", largest, positive=True)
+
+    def fits(r):
+        return select_springs(design, budget, cycles=cycles, n=n, pulley_radius=r,
+                              pulley_friction=pulley_friction).within_budget
+
+    if not fits(0.0):
+        return 0.0
+    lo, hi = 0.0, largest
+    if fits(hi):
+        return hi
+    for _ in range(30):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+        if hi - lo < 1e-5:
+            break
+    return lo
 
 
 def real_spring_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: float = 0.2,
@@ -265,7 +377,7 @@ def real_spring_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c:
     --------
     >>> d = real_spring_lever()
     >>> d.balance_report().balanced, round(d.parameters["d"] * 1000, 1)
-    (True, 1.8)
+    (True, 1.6)
     """
     ideal = single_link_spring(mass, length, b, c)
     sel = select_springs(ideal, budget=1e9, cycles=cycles, retune=True)

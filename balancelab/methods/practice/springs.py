@@ -15,10 +15,20 @@ for instance Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, ch. 1
   ``tau_i = 231 / exp(0.105 C) +- 6.9 (4 - (C - 3) / 6.5)`` MPa;
 * minimum tensile strength ``S_ut = A / d^m`` (``d`` in mm, ``A`` in MPa mm^m), constants
   per material from Shigley's table 10-4;
-* allowable body stress as a fraction of ``S_ut``: static 45 % (music wire) or 35 %
-  (austenitic stainless) (Shigley table 10-7); in cyclic service (stress ratio 0, not
-  shot-peened) 36 %, 33 % and 30 % for 1e5, 1e6 and 1e7 cycles (table 10-8),
-  interpolated in ``log10(cycles)`` between those points.
+* allowable stresses as fractions of ``S_ut`` (Shigley table 10-7, static): body torsion
+  45 % (music wire) or 35 % (austenitic stainless), hook torsion 40 % or 30 %, hook bending
+  75 % or 55 %; in cyclic service (table 10-8: stress ratio 0, not shot-peened) body
+  36 / 33 / 30 %, hook torsion 34 / 30 / 28 % and hook bending 51 / 47 / 45 % for 1e5, 1e6
+  and 1e7 cycles, interpolated in ``log10(cycles)`` between those points;
+* the hooks (Shigley eqs. 10-34 to 10-36): at the hook's bend (point A, mean bend radius
+  ``r1``, ``C1 = 2 r1 / d``) the wire is bent and pulled,
+  ``sigma_A = F (K_A 16 D / (pi d^3) + 4 / (pi d^2))`` with
+  ``K_A = (4 C1^2 - C1 - 1) / (4 C1 (C1 - 1))``; where the hook turns up from the body
+  (point B, bend radius ``r2``, ``C2 = 2 r2 / d``) it is twisted,
+  ``tau_B = K_B 8 F D / (pi d^3)`` with ``K_B = (4 C2 - 1) / (4 C2 - 4)``. A standard
+  full-loop machine hook has ``r1 = D / 2`` (``C1 = C``) and here ``r2 = 2 d`` (``C2 = 4``,
+  the smallest the guidance recommends); each hook adds its inside diameter ``D - d`` to
+  the length between the load points (free length ``L_0 = (N_b + 1) d + 2 (D - d)``).
 
 The constants were taken from the textbook as the authors remember its 9th/10th
 editions; they reproduce its worked example 10-7 (see ``tests/test_practice.py``), but
@@ -44,7 +54,8 @@ from ...core.validation import finite_real
 
 __all__ = ["Material", "MUSIC_WIRE", "STAINLESS_302", "MATERIALS", "WIRE_DIAMETERS", "spring_rate",
            "spring_index", "wahl_factor", "shear_stress", "initial_stress_range", "tensile_strength",
-           "allowable_stress", "ExtensionSpring", "zfl_force_error"]
+           "allowable_stress", "hook_bending_factor", "hook_torsion_factor", "hook_stresses", "ExtensionSpring",
+           "zfl_force_error"]
 
 
 class Material(NamedTuple):
@@ -52,7 +63,9 @@ class Material(NamedTuple):
 
     ``shear_modulus`` (Pa); tensile strength ``S_ut = A / d^m`` with ``strength_A``
     (MPa mm^m) and ``strength_m``; ``static_fraction``: allowable body torsion stress in
-    static service as a fraction of ``S_ut``; ``source``: where the numbers come from.
+    static service as a fraction of ``S_ut``; ``source``: where the numbers come from;
+    ``hook_torsion_fraction`` and ``hook_bending_fraction``: the static allowables of the
+    hooks (torsion at the hook's root, bending at its bend) as fractions of ``S_ut``.
     """
 
     name: str
@@ -61,6 +74,8 @@ class Material(NamedTuple):
     strength_m: float
     static_fraction: float
     source: str
+    hook_torsion_fraction: float = 0.40
+    hook_bending_fraction: float = 0.75
 
 
 _SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, tables 10-4, 10-5, 10-7"
@@ -68,7 +83,7 @@ _SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, tables 1
 #: Music wire (ASTM A228), valid for wire diameters 0.10-6.5 mm.
 MUSIC_WIRE = Material("music wire (ASTM A228)", 81.7e9, 2211.0, 0.145, 0.45, _SHIGLEY)
 #: Stainless steel 302 (ASTM A313), valid for wire diameters 0.3-2.5 mm.
-STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.0e9, 1867.0, 0.146, 0.35, _SHIGLEY)
+STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.0e9, 1867.0, 0.146, 0.35, _SHIGLEY, 0.30, 0.55)
 #: The bundled materials by short name.
 MATERIALS = {"music_wire": MUSIC_WIRE, "stainless_302": STAINLESS_302}
 
@@ -76,8 +91,13 @@ MATERIALS = {"music_wire": MUSIC_WIRE, "stainless_302": STAINLESS_302}
 WIRE_DIAMETERS = tuple(x / 1000 for x in (0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.4, 1.6,
                                           1.8, 2.0, 2.2, 2.5, 2.8, 3.0, 3.2, 3.5, 4.0, 4.5, 5.0))
 
-#: Fatigue allowables of the body of an extension spring (fraction of S_ut) by log10(cycles).
-_FATIGUE = ((5.0, 0.36), (6.0, 0.33), (7.0, 0.30))
+#: Fatigue allowables of an extension spring (fraction of S_ut, stress ratio 0) by log10(cycles),
+#: for its body (torsion), its hooks' roots (torsion) and its hooks' bends (bending); table 10-8.
+_FATIGUE = {"body": ((5.0, 0.36), (6.0, 0.33), (7.0, 0.30)),
+            "hook_torsion": ((5.0, 0.34), (6.0, 0.30), (7.0, 0.28)),
+            "hook_bending": ((5.0, 0.51), (6.0, 0.47), (7.0, 0.45))}
+_STATIC = {"body": "static_fraction", "hook_torsion": "hook_torsion_fraction",
+           "hook_bending": "hook_bending_fraction"}
 
 
 def _positive(name, value):
@@ -197,13 +217,14 @@ def tensile_strength(wire_diameter, material: Material = MUSIC_WIRE):
     return material.strength_A / d_mm ** material.strength_m * 1e6
 
 
-def allowable_stress(wire_diameter, material: Material = MUSIC_WIRE, cycles: float | None = None):
-    """Allowable corrected body shear stress (Pa): static, or fatigue-aware for ``cycles`` load cycles.
+def allowable_stress(wire_diameter, material: Material = MUSIC_WIRE, cycles: float | None = None,
+                     where: str = "body"):
+    """Allowable stress (Pa) of the body or a hook: static, or fatigue-aware for ``cycles`` load cycles.
 
-    Static (``cycles=None``): ``material.static_fraction * S_ut``. Cyclic (stress ratio 0,
-    not shot-peened): 36 / 33 / 30 % of ``S_ut`` at 1e5 / 1e6 / 1e7 cycles, linear in
-    ``log10(cycles)`` between them, 36 % below 1e5 (never above the static value) and 30 %
-    beyond 1e7 (the table's last entry; treat it as the endurance allowable).
+    Static (``cycles=None``): the material's fraction of ``S_ut`` for ``where``. Cyclic
+    (stress ratio 0, not shot-peened): Shigley's table 10-8 at 1e5 / 1e6 / 1e7 cycles,
+    linear in ``log10(cycles)`` between them, its 1e5 value below (never above the static
+    value) and its 1e7 value beyond (treat it as the endurance allowable).
 
     Parameters
     ----------
@@ -212,26 +233,100 @@ def allowable_stress(wire_diameter, material: Material = MUSIC_WIRE, cycles: flo
     material : Material
     cycles : float, optional
         Number of load cycles in service, >= 1.
+    where : {"body", "hook_torsion", "hook_bending"}
+        The body's torsion (Wahl-corrected), the torsion at a hook's root or the bending
+        at a hook's bend.
 
     Examples
     --------
     >>> round(float(allowable_stress(1e-3)) / 1e6, 1), round(float(allowable_stress(1e-3, cycles=1e6)) / 1e6, 1)
     (995.0, 729.6)
+    >>> round(float(allowable_stress(1e-3, where="hook_bending")) / 1e6, 1)
+    1658.2
     """
+    if where not in _FATIGUE:
+        raise ValueError(f"where must be one of {sorted(_FATIGUE)}, got {where!r}")
     sut = tensile_strength(wire_diameter, material)
+    static = getattr(material, _STATIC[where])
     if cycles is None:
-        return material.static_fraction * sut
+        return static * sut
     n = finite_real("cycles", cycles, positive=True)
     if n < 1:
         raise ValueError(f"cycles must be >= 1, got {n}")
-    xs, ys = zip(*_FATIGUE)
+    xs, ys = zip(*_FATIGUE[where])
     frac = float(np.interp(math.log10(n), xs, ys))
-    return min(frac, material.static_fraction) * sut
+    return min(frac, static) * sut
+
+
+def hook_bending_factor(index):
+    """Stress factor ``K_A = (4 C1^2 - C1 - 1) / (4 C1 (C1 - 1))`` at a hook's bend of index ``C1 = 2 r1 / d > 1``.
+
+    Examples
+    --------
+    >>> round(float(hook_bending_factor(10.0)), 4)
+    1.0806
+    """
+    C = _positive("hook index C1", index)
+    if np.any(C <= 1):
+        raise ValueError(f"hook index C1 must be > 1, got {index!r}")
+    return (4 * C ** 2 - C - 1) / (4 * C * (C - 1))
+
+
+def hook_torsion_factor(index):
+    """Stress factor ``K_B = (4 C2 - 1) / (4 C2 - 4)`` at a hook's root of index ``C2 = 2 r2 / d > 1``.
+
+    Examples
+    --------
+    >>> float(hook_torsion_factor(4.0))
+    1.25
+    """
+    C = _positive("hook index C2", index)
+    if np.any(C <= 1):
+        raise ValueError(f"hook index C2 must be > 1, got {index!r}")
+    return (4 * C - 1) / (4 * C - 4)
+
+
+def hook_stresses(force, wire_diameter, coil_diameter, bend_radius=None, root_radius=None):
+    """Bending stress at a hook's bend and torsion at its root (Pa) at the pull ``force`` (N).
+
+    ``sigma_A = F (K_A 16 D / (pi d^3) + 4 / (pi d^2))`` and ``tau_B = K_B 8 F D / (pi d^3)``
+    (Shigley eqs. 10-34 to 10-36).
+
+    Parameters
+    ----------
+    force : float or array_like
+        Pull (N).
+    wire_diameter, coil_diameter : float
+        ``d`` and ``D`` (m).
+    bend_radius : float, optional
+        Mean radius ``r1`` (m) of the hook's bend; ``D / 2`` (a standard full loop) by default.
+    root_radius : float, optional
+        Mean radius ``r2`` (m) of the bend where the hook leaves the body; ``2 d`` by default.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        ``sigma_A`` and ``tau_B``.
+
+    Examples
+    --------
+    >>> sA, tB = hook_stresses(10.0, 1e-3, 10e-3)
+    >>> round(float(sA) / 1e6, 1), round(float(tB) / 1e6, 1)
+    (563.1, 318.3)
+    """
+    d = _positive("wire_diameter (m)", wire_diameter)
+    D = _positive("coil_diameter (m)", coil_diameter)
+    r1 = D / 2 if bend_radius is None else _positive("bend_radius (m)", bend_radius)
+    r2 = 2 * d if root_radius is None else _positive("root_radius (m)", root_radius)
+    F = np.asarray(force, dtype=float)
+    sigma = F * (hook_bending_factor(2 * r1 / d) * 16 * D / (math.pi * d ** 3) + 4 / (math.pi * d ** 2))
+    tau = hook_torsion_factor(2 * r2 / d) * 8 * F * D / (math.pi * d ** 3)
+    return sigma, tau
 
 
 @dataclass(frozen=True)
 class ExtensionSpring:
-    """A helical extension spring with initial tension.
+    """A helical extension spring with initial tension, by default with a standard hook at each end.
 
     Parameters
     ----------
@@ -245,13 +340,19 @@ class ExtensionSpring:
         ``F_i`` (N), >= 0; see :meth:`initial_tension_range` for what can be wound.
     material : Material
     end_length : float
-        Length (m), >= 0, that the hooks or end loops add between the two load points.
+        Further length (m), >= 0, between the load points (beyond the hooks).
+    hooks : bool
+        Standard full-loop machine hooks at both ends (``r1 = D/2``, ``r2 = 2 d``): they add
+        ``2 (D - d)`` to the length between the load points and their stresses limit the
+        pull (:meth:`max_force`). ``False``: the coil body alone (a bare model).
 
     Examples
     --------
     >>> s = ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
-    >>> round(s.k, 2), round(s.body_length, 4), round(s.equivalent_free_length, 4)
-    (498.66, 0.041, 0.037)
+    >>> round(s.k, 2), round(s.coil_length, 4), round(s.body_length, 4), round(s.equivalent_free_length, 4)
+    (498.66, 0.041, 0.055, 0.051)
+    >>> s.governing()
+    'hook_torsion'
     """
 
     wire_diameter: float
@@ -260,6 +361,7 @@ class ExtensionSpring:
     initial_tension: float = 0.0
     material: Material = MUSIC_WIRE
     end_length: float = 0.0
+    hooks: bool = True
 
     def __post_init__(self) -> None:
         d = finite_real("wire_diameter (m)", self.wire_diameter, positive=True)
@@ -271,6 +373,8 @@ class ExtensionSpring:
         finite_real("end_length (m)", self.end_length, nonnegative=True)
         if not isinstance(self.material, Material):
             raise TypeError(f"material must be a Material, got {type(self.material).__name__}")
+        if not isinstance(self.hooks, (bool, np.bool_)):
+            raise TypeError(f"hooks must be True or False, got {self.hooks!r}")
 
     @property
     def index(self) -> float:
@@ -284,9 +388,19 @@ class ExtensionSpring:
                                  self.material.shear_modulus))
 
     @property
+    def coil_length(self) -> float:
+        """Closed length of the coils (m): ``d (N_a + 1)``."""
+        return self.wire_diameter * (self.active_coils + 1)
+
+    @property
+    def hook_length(self) -> float:
+        """Length (m) the two hooks add between the load points: ``2 (D - d)``, or 0 without hooks."""
+        return 2 * (self.coil_diameter - self.wire_diameter) if self.hooks else 0.0
+
+    @property
     def body_length(self) -> float:
-        """Closed length between the load points (m): ``d (N_a + 1) + end_length``."""
-        return self.wire_diameter * (self.active_coils + 1) + self.end_length
+        """Closed length between the load points (m): ``d (N_a + 1) + hook_length + end_length``."""
+        return self.coil_length + self.hook_length + self.end_length
 
     @property
     def equivalent_free_length(self) -> float:
@@ -310,16 +424,32 @@ class ExtensionSpring:
         return np.where(L >= self.body_length, self.k * (L - self.equivalent_free_length), np.nan)
 
     def stress(self, force):
-        """Largest corrected shear stress (Pa) at the pull ``force`` (N)."""
+        """Largest corrected shear stress (Pa) in the body at the pull ``force`` (N)."""
         return shear_stress(force, self.wire_diameter, self.coil_diameter)
 
+    def stresses(self, force) -> dict:
+        """Stresses (Pa) at the pull ``force`` (N): ``body`` and, with hooks, ``hook_torsion`` and ``hook_bending``."""
+        out = {"body": self.stress(force)}
+        if self.hooks:
+            out["hook_bending"], out["hook_torsion"] = hook_stresses(force, self.wire_diameter, self.coil_diameter)
+        return out
+
+    def max_forces(self, cycles: float | None = None) -> dict:
+        """Largest pull (N) each place can carry within its allowable stress (static or for ``cycles``)."""
+        return {where: float(allowable_stress(self.wire_diameter, self.material, cycles, where) / stress)
+                for where, stress in self.stresses(1.0).items()}
+
+    def governing(self, cycles: float | None = None) -> str:
+        """Where the spring fails first: ``"body"``, ``"hook_torsion"`` or ``"hook_bending"``."""
+        limits = self.max_forces(cycles)
+        return min(limits, key=limits.get)
+
     def max_force(self, cycles: float | None = None) -> float:
-        """Largest pull (N) within the allowable stress (static, or for ``cycles`` cycles)."""
-        tau = allowable_stress(self.wire_diameter, self.material, cycles)
-        return float(tau * math.pi * self.wire_diameter ** 3 / (8 * self.coil_diameter * wahl_factor(self.index)))
+        """Largest pull (N) within every allowable stress (body and hooks; static, or for ``cycles``)."""
+        return min(self.max_forces(cycles).values())
 
     def max_deflection(self, cycles: float | None = None) -> float:
-        """Largest stretch (m) past the body length within the allowable stress."""
+        """Largest stretch (m) past the body length within the allowable stresses."""
         return max(0.0, (self.max_force(cycles) - self.initial_tension) / self.k)
 
 
