@@ -302,6 +302,20 @@ def test_hand_force_on_an_unbalanced_link():
     assert np.allclose(down, np.maximum(-imbalance + 0.2, 0) / 0.4, atol=1e-7)
 
 
+def test_pin_friction_grows_with_the_pin_load():
+    """Lever: the pin carries the weight and the spring's pull k (B - C), so tau = mu r |m g (0, -1) + k (B - C)|."""
+    d = lever()
+    k = d.springs[0].k
+    th = np.linspace(-np.pi, np.pi, 13)
+    q, t = fr.pin_friction(d, 0.15, 0.004, q=th[:, None])
+    C = 0.2 * np.stack([np.cos(th), np.sin(th)], -1)
+    load = np.array([0.0, -2.0 * G]) + k * (np.array([0.0, 0.3]) - C)
+    assert np.allclose(t[:, 0], 0.15 * 0.004 * np.linalg.norm(load, axis=-1), rtol=1e-9)
+    assert t.min() < t.max()          # not a constant: largest where the spring pulls the pin hardest
+    with pytest.raises(ValueError, match="mu"):
+        fr.pin_friction(d, -0.1, 0.004)
+
+
 def test_friction_refuses_bad_input():
     arm = bl.singh.serial_2r_min_preload()
     with pytest.raises(ValueError, match="one per joint"):

@@ -14,7 +14,13 @@ To move the design along a direction ``v`` of its coordinates, a hand at a point
 must supply the generalized force ``Q . v`` plus friction
 ``sum_j tau_j |d phi_j/dq . v|``; pushing along the point's own velocity (the most
 effective direction) that takes a force ``(Q . v + friction) / |dP/dq . v|``
-(:func:`hand_force`). Layer: methods.
+(:func:`hand_force`). Over a full turn of a single link, ``+direction`` is counter-clockwise
+and ``-direction`` clockwise: whether that lifts or lowers the tip depends on the angle.
+
+Pin friction is not a constant: a pin of radius ``r_pin`` with friction coefficient
+``mu`` resists with about ``mu r_pin |F_j|``, ``F_j`` the joint's load
+(:func:`pin_friction`); its largest value over the range is a safe constant ``tau_j`` for
+the functions above. Layer: methods.
 """
 from __future__ import annotations
 
@@ -25,9 +31,11 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import gravity_load
 from ...core.validation import body_index, finite_real, planar_point
+from . import forces
 from .forces import configurations, generalized_force, joint_loads, joint_tree, pose_jacobian
 
-__all__ = ["joint_friction", "holding_torques", "stays_put", "FrictionBand", "friction_band", "hand_force"]
+__all__ = ["joint_friction", "pin_friction", "holding_torques", "stays_put", "FrictionBand", "friction_band",
+           "hand_force"]
 
 
 def joint_friction(design: Design, friction) -> np.ndarray:
@@ -46,6 +54,37 @@ def joint_friction(design: Design, friction) -> np.ndarray:
     if len(values) != nj:
         raise ValueError(f"friction must be one torque (N m) or one per joint ({nj}), got {len(values)}")
     return np.array(values)
+
+
+def pin_friction(design: Design, mu: float, pin_radius: float, q=None, n: int = 61) -> tuple[np.ndarray, np.ndarray]:
+    """Configurations ``(m, dof)`` and the friction torque ``mu r_pin |F_j|`` (N m) of every joint ``(m, n_joints)``.
+
+    ``F_j`` is the joint's load from :func:`balancelab.methods.practice.forces.joint_loads`
+    (springs, weights and reactions of the part beyond the joint).
+
+    Parameters
+    ----------
+    design : Design
+        A tree design.
+    mu : float
+        Friction coefficient of the pin in its bore, >= 0.
+    pin_radius : float
+        Radius of the pin (m), >= 0.
+    q, n
+        Configurations, as in :func:`stays_put`.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    >>> q, t = pin_friction(d, 0.2, 0.005, n=5)
+    >>> bool(np.allclose(t[:, 0], 0.2 * 0.005 * np.linalg.norm(forces.joint_loads(d, q).force[:, 0], axis=-1)))
+    True
+    """
+    mu = finite_real("mu", mu, nonnegative=True)
+    pin_radius = finite_real("pin_radius (m)", pin_radius, nonnegative=True)
+    q = configurations(design, q, n)
+    return q, mu * pin_radius * np.linalg.norm(joint_loads(design, q).force, axis=-1)
 
 
 def holding_torques(design: Design, q=None, n: int = 61) -> tuple[np.ndarray, np.ndarray]:
