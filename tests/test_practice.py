@@ -424,3 +424,9 @@ def test_extension_spring_refuses_bad_input():
         sp.spring_rate(-1e-3, 8e-3, 10)
     with pytest.raises(ValueError, match="cycles"):
         sp.allowable_stress(1e-3, cycles=0.5)
+    with pytest.raises(TypeError, match="hooks"):
+        sp.ExtensionSpring(1e-3, 8e-3, 10, hooks="standard")
+    with pytest.raises(ValueError, match="bend_radius"):
+        sp.hook_stresses(1.0, 1e-3, 8e-3, bend_radius=-1e-3)
+    with pytest.raises(ValueError, match="hook index C2"):
+        sp.hook_stresses(1.0, 1e-3, 8e-3, root_radius=0.4e-3)       # a bend tighter than the wire

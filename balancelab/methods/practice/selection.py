@@ -308,8 +308,8 @@ def largest_pulley_radius(design: Design, budget: float, *, pulley_friction: flo
     """Largest pulley radius (m) with which the selected real springs keep ``design`` within ``budget``.
 
     The springs are chosen as by :func:`select_springs` (pulley mode); the radius is then
-    found by bisection on the exact string model, friction included. 0 when even ideal
-    point pulleys do not fit.
+    found by bisection on the exact string model, friction included (a pulley too large
+    for the geometry does not fit). 0 when even ideal point pulleys do not fit.
 
     Parameters
     ----------
@@ -338,8 +338,13 @@ def largest_pulley_radius(design: Design, budget: float, *, pulley_friction: flo
     largest = finite_real("largest (m)", largest, positive=True)
 
     def fits(r):
-        return select_springs(design, budget, cycles=cycles, n=n, pulley_radius=r,
-                              pulley_friction=pulley_friction).within_budget
+        try:
+            return select_springs(design, budget, cycles=cycles, n=n, pulley_radius=r,
+                                  pulley_friction=pulley_friction).within_budget
+        except ValueError:
+            if r == 0:
+                raise
+            return False        # a pulley so large that a string end comes inside it
 
     if not fits(0.0):
         return 0.0
