@@ -31,7 +31,9 @@ for instance Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, ch. 1
   the length between the load points (free length ``L_0 = (N_b + 1) d + 2 (D - d)``).
 
 The constants were taken from the textbook as the authors remember its 9th/10th
-editions; they reproduce its worked example 10-7 (see ``tests/test_practice.py``), but
+editions; they reproduce its worked example 10-7 (see ``tests/test_practice.py``), and
+the static fractions and the cyclic hook-bending fractions agree with a secondary source
+quoting tables 10-7 and 10-8 (the cyclic hook-torsion fractions were not rechecked), but
 check them against the edition you use before ordering springs.
 
 **When is an extension spring a ZFL spring?** Wound with initial tension ``F_i``, the
