@@ -23,6 +23,8 @@ from .pulley import (PulleyError, PulleyString, pulley_balance_error, pulley_ene
                      pulley_lever, pulley_string)
 from .negative import negative_free_length_partner, parallel_springs_lever
 from .optimizer import ApproximationError, approximate_lever
+from .profile import CableGeometry, NoncircularProfile, ProfileError
+from .noncircular import noncircular_pulley, spring_limits
 
 __all__ = [
     "PulleyString",
@@ -36,4 +38,9 @@ __all__ = [
     "parallel_springs_lever",
     "ApproximationError",
     "approximate_lever",
+    "CableGeometry",
+    "NoncircularProfile",
+    "ProfileError",
+    "noncircular_pulley",
+    "spring_limits",
 ]
