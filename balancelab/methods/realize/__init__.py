@@ -25,6 +25,7 @@ from .negative import negative_free_length_partner, parallel_springs_lever
 from .optimizer import ApproximationError, approximate_lever
 from .profile import CableGeometry, NoncircularProfile, ProfileError
 from .noncircular import noncircular_pulley, spring_limits
+from .profile_export import ProfilePart, export_profile, profile_part
 
 __all__ = [
     "PulleyString",
@@ -43,4 +44,7 @@ __all__ = [
     "ProfileError",
     "noncircular_pulley",
     "spring_limits",
+    "ProfilePart",
+    "profile_part",
+    "export_profile",
 ]

@@ -190,7 +190,7 @@ def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> d
 
 
 def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
-    """No ``min_tension`` given: the wrappable profile with the roundest curve over a range of tensions."""
+    """No ``min_tension`` given: the wrappable profile with the roundest curve, for tensions up to ``limit``."""
     start = max(spring_model.initial_tension, 0.02 * limit)
     best, first_error = None, None
     for tension in np.geomspace(start, limit, 40):
@@ -202,7 +202,8 @@ def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_
         if best is None or found[1]["min_radius_of_curvature"] > best[1][1]["min_radius_of_curvature"]:
             best = (float(tension), found)
     if best is None:
-        raise ProfileError(f"no min_tension between {start:.4g} N and the spring's limit {limit:.4g} N gives a "
+        raise ProfileError(f"no min_tension between {start:.4g} N and {limit:.4g} N (above it the spring is "
+                           f"overstressed at the range's end) gives a "
                            f"wrappable profile; at {start:.4g} N: {first_error}")
     return best
 
@@ -318,10 +319,16 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     k = spring_model.k
     limit = spring_limits(spring_model, cycles)["max_force"]
     v_coef = _energy_series(design, spring, lo, hi)
+    fine = cheb.chebval(np.linspace(-1, 1, 4001), v_coef)
+    exchange = float(np.ptp(fine))         # the energy the spring must store and give back (J)
     if min_tension is None:
-        min_tension, found = _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius)
+        top = math.sqrt(max(limit ** 2 - 2 * k * exchange, 0.0))   # highest smallest tension within the limit
+        _check_spring(spring_model, k, spring_model.initial_tension, math.hypot(spring_model.initial_tension,
+                      math.sqrt(2 * k * exchange)), cycles)
+        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, cable_bend_radius)
     else:
         min_tension = finite_real("min_tension (N)", min_tension, positive=True)
+        _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
         found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
     profile, checks, theta, tension = found
     sp_checks = _check_spring(spring_model, k, min_tension, float(np.max(tension)), cycles)
