@@ -177,7 +177,7 @@ def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> d
                            "a stiffer spring (a larger change of tension over the range)")
     if rc[i] < cable_bend_radius:
         raise ProfileError(f"the profile's smallest radius of curvature, {1000 * rc[i]:.3g} mm at "
-                           f"{math.degrees(theta[i]):.2f}°, is below the cable's bending radius "
+                           f"{math.degrees(theta[i]):.2f}°, is below the cable's bending radius (cable_bend_radius) "
                            f"{1000 * cable_bend_radius:.3g} mm by {1000 * (cable_bend_radius - rc[i]):.3g} mm")
     h, psi = profile.support(x)
     straight = profile.rho * np.sin(psi + profile.turn * theta - profile.alpha) + \

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 from pathlib import Path
 from typing import NamedTuple
 
@@ -57,6 +58,14 @@ def _profile_of(design: Design, spring: int) -> NoncircularProfile:
         raise ValueError(f"{design.name}: spring {spring} is not wound on a non-circular pulley "
                          "(build one with realize.noncircular_pulley)")
     return prof
+
+
+def _size(name: str, value) -> float:
+    """A part dimension (m): positive and below half a metre."""
+    value = finite_real(f"{name} (m)", value, positive=True)
+    if value > 0.5:
+        raise ValueError(f"{name} must be below 0.5 m (a pulley's part), got {value} m")
+    return value
 
 
 def _hull(points: np.ndarray) -> np.ndarray:
@@ -123,10 +132,8 @@ def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diamete
     """
     prof = _profile_of(design, spring)
     n = positive_int("n (points on the pitch curve, at least 10)", n, minimum=10)
-    axle = finite_real("axle_diameter (m)", axle_diameter, positive=True)
-    cable = finite_real("cable_diameter (m)", cable_diameter, positive=True)
-    flange = finite_real("flange (m)", flange, positive=True)
-    boss = finite_real("boss (m)", boss, positive=True)
+    axle, cable, flange, boss = (_size(name, v) for name, v in (("axle_diameter", axle_diameter),
+                                 ("cable_diameter", cable_diameter), ("flange", flange), ("boss", boss)))
     x = _even_in_arc_length(prof, n)
     pitch, normal = prof.local_points(x), prof.normals(x)
     h = np.sum(pitch * normal, -1)            # distance of each tangent line from the pivot
@@ -134,7 +141,8 @@ def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diamete
     room = float(np.min(h)) - cable / 2 - hub
     if room <= 0:
         raise ValueError(f"the axle's boss (radius {1000 * hub:.3g} mm) reaches {1000 * -room:.3g} mm into the "
-                         "cable's groove: use a smaller axle_diameter or boss, or a profile farther from the pivot")
+                         "cable's groove: use a smaller axle_diameter, boss or cable_diameter, or a profile "
+                         "farther from the pivot")
     groove = _closed(pitch - cable / 2 * normal, hub)
     outer = _closed(pitch + flange * normal, hub)
     return ProfilePart(pitch, groove, outer, axle, prof.mid + prof.half * x)
@@ -225,6 +233,8 @@ def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
     ...     len(out.read_text().splitlines())
     102
     """
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a file name (str or pathlib.Path), got {type(path).__name__}")
     path = Path(path)
     writers = {".svg": _svg, ".dxf": _dxf, ".csv": _csv}
     if path.suffix.lower() not in writers:
