@@ -351,7 +351,9 @@ def _assemble(design, spring, old, spring_model, profile, theta, tension, number
     lo, hi = profile.angle_range
     params = {**design.parameters, "k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension,
               "cable_length": cable_length, **numbers}
-    labels = {**design.labels, "E": (1, end), "eyelet": (0, profile.anchor)}
+    labels = dict(design.labels)
+    if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
+        labels["eyelet"] = (0, profile.anchor)
     return design.replace(name=f"{design.name}: real spring on a non-circular pulley", springs=springs,
                           kinematics=lever_kinematics(design.q_names[0], (lo, hi)), labels=labels,
                           parameters=params, reference=(design.reference + "; " if design.reference else "")
