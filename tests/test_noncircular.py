@@ -238,7 +238,7 @@ def test_concave_profile_is_refused_with_its_radius(lever):
 
 def test_curvature_below_the_cables_bending_radius_is_refused(lever, design):
     rmin = design.parameters["min_radius_of_curvature"]
-    with pytest.raises(rz.ProfileError, match=r"below the cable's bending radius 30 mm by [\d.]+ mm"):
+    with pytest.raises(rz.ProfileError, match=r"below the cable's bending radius \(cable_bend_radius\) 30 mm by [\d.]+ mm"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0,
                               cable_bend_radius=0.03)
     assert rmin < 0.03

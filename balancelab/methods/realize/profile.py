@@ -177,7 +177,7 @@ class NoncircularProfile(CablePath):
             dg = -self.rho * np.sin(beta) * cheb.chebval(x, self._dpsi) - cheb.chebval(x, self._dh)
             step = g / dg
             x = x - step
-            if np.all(np.abs(step) < 1e-15):
+            if np.all(np.abs(step) < 1e-11):   # converging quadratically: x is now exact to round-off
                 break
         bad = np.abs(x) > 1 + _EDGE
         if np.any(bad) or not np.all(np.isfinite(x)):

@@ -81,7 +81,7 @@ def _closed(arc: np.ndarray, hub: float) -> np.ndarray:
 
 def _even_in_arc_length(prof: NoncircularProfile, n: int) -> np.ndarray:
     """Profile parameters of ``n`` points evenly spaced along the curve (in the order of growing psi)."""
-    dense = np.linspace(-1.0, 1.0, 64 * n + 1)
+    dense = np.linspace(-1.0, 1.0, 4 * n + 1)
     s = prof.arc_length(dense)
     if s[-1] < s[0]:
         dense, s = dense[::-1], s[::-1]
