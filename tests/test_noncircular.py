@@ -272,3 +272,33 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
     with pytest.raises(ValueError, match="one link"):
         rz.noncircular_pulley(bl.lecture.serial_2r_parallelogram(), spring_model=REAL)
+
+
+# ------------------------------------------------------------------ drawing
+def test_drawing_follows_the_design_cable(design):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from balancelab.viz.springs import cable_angle, cable_path, profile_outline
+
+    s = design.springs[0]
+    for q in (-0.9, 0.0, 0.8):
+        end = design.world_points(q, [s.b])[0]
+        assert cable_angle(s, end) == pytest.approx(q, abs=1e-12)
+        x, y = cable_path(s, q, 1.0)
+        cab = s.cable.cable(q)
+        path = np.column_stack([x, y])
+        assert np.allclose(path[-1], end, atol=1e-12)                     # ends at the clamp
+        assert np.min(np.hypot(*(path - cab.tangent).T)) < 1e-12           # passes the tangent point
+        eyelet = np.add(s.cable.pivot, s.cable.anchor)
+        assert np.min(np.hypot(*(path - eyelet).T)) < 1e-12                # and the eyelet
+        # the coil is drawn at the spring's true length beyond the eyelet
+        assert np.hypot(*(path[0] - eyelet)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        ox, oy = profile_outline(s, q)
+        assert np.allclose(np.column_stack([ox, oy])[0], s.cable.world(q, s.cable.local_points(-1.0)))
+    fig = bl.draw(design, 0.3).figure
+    assert any(line.get_gid() == f"spring:{s.name}" for line in fig.axes[0].lines)
+    plt.close(fig)
+    anim = bl.animate(design, frames=6)
+    assert anim is not None
+    plt.close("all")
