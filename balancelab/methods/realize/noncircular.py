@@ -190,7 +190,7 @@ def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> d
 
 
 def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
-    """No ``min_tension`` given: the wrappable profile with the roundest curve, for tensions up to ``limit``."""
+    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``."""
     start = max(spring_model.initial_tension, 0.02 * limit)
     best, first_error = None, None
     for tension in np.geomspace(start, limit, 40):
@@ -199,13 +199,14 @@ def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_
         except ProfileError as err:
             first_error = first_error or err
             continue
-        if best is None or found[1]["min_radius_of_curvature"] > best[1][1]["min_radius_of_curvature"]:
-            best = (float(tension), found)
+        size = float(np.max(np.hypot(*found[0].local_points(np.linspace(-1.0, 1.0, 201)).T)))
+        if best is None or size < best[2]:
+            best = (float(tension), found, size)
     if best is None:
         raise ProfileError(f"no min_tension between {start:.4g} N and {limit:.4g} N (above it the spring is "
                            f"overstressed at the range's end) gives a "
                            f"wrappable profile; at {start:.4g} N: {first_error}")
-    return best
+    return best[:2]
 
 
 def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
@@ -274,7 +275,7 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     min_tension : float, optional
         Smallest cable tension over the range (N), at least the initial tension; by default
         the tension between ``F_i`` and the spring's allowable pull (40 values tried) whose
-        profile is wrappable and roundest (largest smallest radius of curvature).
+        profile is wrappable and most compact (nearest the pivot at its farthest point).
     eyelet : (float, float), optional
         Where the cable leaves the ground (m), world frame; default the spring's ground attachment.
     turn : {1, -1}, optional
