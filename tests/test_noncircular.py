@@ -302,3 +302,32 @@ def test_drawing_follows_the_design_cable(design):
     anim = bl.animate(design, frames=6)
     assert anim is not None
     plt.close("all")
+
+
+# ------------------------------------------------------------------ properties
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mass=st.floats(0.5, 4.0), length=st.floats(0.2, 0.8), eyelet_r=st.floats(0.1, 0.6),
+       eyelet_a=st.floats(-math.pi, math.pi), lo=st.floats(-1.2, 0.3), span=st.floats(0.3, 1.6),
+       tension=st.floats(1.0, 4.0), turn=st.sampled_from([1, -1, None]))
+def test_every_profile_it_builds_balances_and_every_refusal_is_a_profile_error(mass, length, eyelet_r, eyelet_a,
+                                                                                lo, span, tension, turn):
+    lever = bl.lecture.single_link_spring(mass, length, 0.3, 0.2)
+    eyelet = (eyelet_r * math.cos(eyelet_a), eyelet_r * math.sin(eyelet_a))
+    try:
+        d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(lo, lo + span), eyelet=eyelet,
+                                  min_tension=tension * REAL.initial_tension, turn=turn)
+    except rz.ProfileError as err:
+        assert "°" in str(err) or " N" in str(err)   # it says where or by how much
+        return
+    theta = np.random.default_rng(0).uniform(lo, lo + span, 200)
+    cab = d.springs[0].cable.cable(theta)
+    tension_now = REAL.k * (cab.path - d.parameters["cable_length"] - REAL.equivalent_free_length)
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    residual = tension_now * _cross(cab.tangent, pull) - mass * G * length * np.cos(theta)
+    assert np.max(np.abs(residual)) < 1e-9 * mass * G * length
+    assert np.all(tension_now >= REAL.initial_tension * (1 - 1e-12))
+    assert d.parameters["min_radius_of_curvature"] >= 0.005 and d.balance_report().balanced
