@@ -331,3 +331,23 @@ def test_every_profile_it_builds_balances_and_every_refusal_is_a_profile_error(m
     assert np.max(np.abs(residual)) < 1e-9 * mass * G * length
     assert np.all(tension_now >= REAL.initial_tension * (1 - 1e-12))
     assert d.parameters["min_radius_of_curvature"] >= 0.005 and d.balance_report().balanced
+
+
+def test_spring_limits_follow_the_hook_and_body_formulas():
+    # Shigley's hook stresses, written out here: bending at the loop (C1 = C), torsion at the bend (C2 = 4)
+    d, D = REAL.wire_diameter, REAL.coil_diameter
+    C1, C2 = D / d, 4.0
+    sut = 2211e6 / (d * 1000) ** 0.145                      # music wire, A / d^m
+    per_newton_bending = (4 * C1 ** 2 - C1 - 1) / (4 * C1 * (C1 - 1)) * 16 * D / (math.pi * d ** 3) \
+        + 4 / (math.pi * d ** 2)
+    per_newton_torsion = (4 * C2 - 1) / (4 * C2 - 4) * 8 * D / (math.pi * d ** 3)
+    lim = rz.spring_limits(REAL)
+    assert lim["hook_bending"] == pytest.approx(0.75 * sut / per_newton_bending, rel=1e-12)
+    assert lim["hook_torsion"] == pytest.approx(0.40 * sut / per_newton_torsion, rel=1e-12)
+    assert lim["body"] == pytest.approx(REAL.max_force(), rel=1e-12)
+    assert REAL.stress(lim["body"]) == pytest.approx(0.45 * sut, rel=1e-9)
+
+
+def test_a_full_turn_default_range_asks_for_angle_range(lever):
+    with pytest.raises(ValueError, match=r"pass angle_range=\(lo, hi\)"):
+        rz.noncircular_pulley(lever, spring_model=REAL)

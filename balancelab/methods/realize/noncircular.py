@@ -108,7 +108,8 @@ def _angle_range(design: Design, angle_range) -> tuple[float, float]:
         raise ValueError(f"angle_range must have lo < hi (rad), got ({lo}, {hi})")
     if hi - lo >= math.pi:
         raise ValueError(f"angle_range must span less than 180° (the cable's line turns with the link), "
-                         f"got {math.degrees(hi - lo):.1f}°")
+                         f"got {math.degrees(hi - lo):.1f}°" + (" (the design's whole range: pass angle_range=(lo, hi))"
+                                                                if angle_range is None else ""))
     return float(lo), float(hi)
 
 
