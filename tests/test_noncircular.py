@@ -270,8 +270,30 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, 3, spring_model=REAL)
     with pytest.raises(ValueError, match="turn"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
-    with pytest.raises(ValueError, match="one link"):
-        rz.noncircular_pulley(bl.lecture.serial_2r_parallelogram(), spring_model=REAL)
+    with pytest.raises(ValueError, match="turns about the origin by one of the coordinates"):
+        rz.noncircular_pulley(bl.singh.scissors_lift(), spring_model=REAL, angle_range=(0.3, 0.9))
+
+
+def test_lamp_arm_two_pulleys_one_per_joint():
+    """The lecture's 2R lamp arm with springs at the base: link 1 and the base copy of link 2 each get a
+    real spring on its own profile (the parallelogram carries link 2's angle to the base)."""
+    lamp = bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+    real = ExtensionSpring(2.5e-3, 20e-3, 60, initial_tension=20.0)
+    one = rz.noncircular_pulley(lamp, 0, spring_model=real, angle_range=RANGE)
+    both = rz.noncircular_pulley(one, 1, spring_model=real, angle_range=RANGE)
+    assert all(s.cable is not None and s.free_length > 0 for s in both.springs)
+    assert np.allclose(both.q_range, [RANGE, RANGE]) and both.name.endswith("non-circular pulleys")
+    rep = both.balance_report()
+    assert rep.balanced and rep.variation < 1e-12
+    # each cable's torque balances the generalized force of the loads on its own coordinate
+    q = both.sample(300, seed=5)
+    loads = both.replace(springs=[]).generalized_force(q)
+    for j, s in enumerate(both.springs):
+        cab = s.cable.cable(q[:, j])
+        tension = s.k * (cab.path - s.cable.cable_length - s.free_length)
+        pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+        assert np.max(np.abs(tension * _cross(cab.tangent, pull) - loads[:, j])) < 1e-6 * np.max(np.abs(loads))
 
 
 # ------------------------------------------------------------------ drawing

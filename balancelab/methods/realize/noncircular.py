@@ -31,7 +31,7 @@ from numpy.polynomial import chebyshev as cheb
 from ...core.design import Design
 from ...core.elements import Spring
 from ...core.validation import finite_real, finite_reals, instance_of, planar_point
-from ...mechanisms.lever import lever_kinematics
+from ...mechanisms.base import TreeKinematics
 from ..practice.springs import ExtensionSpring, tensile_strength
 from .profile import NoncircularProfile, ProfileError
 
@@ -85,25 +85,32 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     return out
 
 
-def _lever_link(design: Design, spring) -> int:
-    """Index of the spring in a one-link lever design, or a clear error."""
+def _pivoted_link(design: Design, spring) -> tuple[int, int]:
+    """``(spring, coordinate)``: the spring's moving body turns about the origin by one coordinate."""
     instance_of("design", design, Design, "a balancelab Design")
-    if design.dof != 1 or len(design.bodies) != 2:
-        raise ValueError(f"{design.name}: noncircular_pulley handles one link pivoted on the ground (a lever, "
-                         f"one degree of freedom); this design has {len(design.bodies) - 1} moving bodies")
-    q = design.sample(16, seed=3)[:, 0]
-    pose = design.poses(q)[:, 1]
-    if np.max(np.abs(pose[:, :2])) > 1e-12 or np.max(np.abs(pose[:, 2] - q)) > 1e-12:
-        raise ValueError(f"{design.name}: the link must turn about the origin with its angle as the coordinate")
     if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)):
         raise TypeError(f"spring must be the index of a spring of the design, got {spring!r}")
     if not 0 <= spring < len(design.springs):
         raise ValueError(f"spring must be in 0..{len(design.springs) - 1}, got {spring}")
-    return int(spring)
+    s = design.springs[int(spring)]
+    body = s.b.body if s.a.body == 0 else s.a.body
+    kin = design.kinematics
+    row = getattr(kin, "angle_matrix", None)
+    fits = (row is not None and isinstance(kin, TreeKinematics) and (s.a.body == 0 or s.b.body == 0)
+            and np.count_nonzero(row[body]) == 1 and float(np.max(row[body])) == 1.0
+            and float(kin.angle_offset[body]) == 0.0)
+    if fits:
+        q = design.sample(16, seed=3)
+        fits = float(np.max(np.abs(design.poses(q)[:, body, :2]))) <= 1e-12
+    if not fits:
+        raise ValueError(f"{design.name}: spring {spring} must join the ground to a body that turns about the "
+                         "origin by one of the coordinates (a lever's link, or a 2R arm's link 1 or the base "
+                         "copy of link 2)")
+    return int(spring), int(np.flatnonzero(row[body])[0])
 
 
-def _angle_range(design: Design, angle_range) -> tuple[float, float]:
-    lo, hi = design.q_range[0] if angle_range is None else finite_reals("angle_range (lo, hi, rad)", angle_range, 2)
+def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
+    lo, hi = design.q_range[coordinate] if angle_range is None else finite_reals("angle_range (lo, hi, rad)", angle_range, 2)
     if not lo < hi:
         raise ValueError(f"angle_range must have lo < hi (rad), got ({lo}, {hi})")
     if hi - lo >= math.pi:
@@ -113,17 +120,41 @@ def _angle_range(design: Design, angle_range) -> tuple[float, float]:
     return float(lo), float(hi)
 
 
-def _energy_series(design: Design, spring: int, lo: float, hi: float):
-    """Chebyshev series (in x in [-1, 1]) of the energy of everything but the spring."""
+def _restricted(design: Design, coordinate: int, lo: float, hi: float) -> TreeKinematics:
+    """The design's kinematics with the range of one coordinate narrowed to ``(lo, hi)``."""
+    kin = design.kinematics
+    q_range = np.array(kin.q_range, dtype=float)
+    q_range[coordinate] = (lo, hi)
+    return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
+                          angle_offset=kin.angle_offset)
+
+
+def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: float):
+    """Chebyshev series (in x in [-1, 1]) of the energy of everything but the spring, along one coordinate.
+
+    The other coordinates are held at two places in their ranges; the energy must differ between
+    them by a constant only (the rest depends on this coordinate alone), or no profile on this
+    body can balance it.
+    """
     rest = design.replace(springs=[s for i, s in enumerate(design.springs) if i != spring],
-                          kinematics=lever_kinematics(design.q_names[0], (lo, hi)))
+                          kinematics=_restricted(design, coordinate, lo, hi))
+    span = rest.q_range
     for n in _DEGREES:
         x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
-        coef = cheb.chebfit(x, rest.potential_energy(0.5 * (lo + hi) + 0.5 * (hi - lo) * x).total, n - 1)
+        q = np.repeat([span[:, 0] + 0.5 * (span[:, 1] - span[:, 0])], n, axis=0)
+        q[:, coordinate] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * x
+        v = rest.potential_energy(q).total
+        coef = cheb.chebfit(x, v, n - 1)
         if np.max(np.abs(coef[-4:])) <= 1e-14 * max(np.max(np.abs(coef[1:])), 1e-300):
             break
     if np.max(np.abs(coef[1:])) == 0.0:
         raise ValueError(f"{design.name}: without the spring nothing exchanges energy; nothing to balance")
+    q2 = np.repeat([span[:, 0] + 0.3 * (span[:, 1] - span[:, 0])], n, axis=0)
+    q2[:, coordinate] = q[:, coordinate]
+    drift = np.ptp(rest.potential_energy(q2).total - v)
+    if drift > 1e-9 * np.ptp(v):
+        raise ValueError(f"{design.name}: without spring {spring} the energy along {design.q_names[coordinate]} "
+                         f"also depends on the other coordinates (by {drift:.3g} J): one profile cannot balance it")
     return coef
 
 
@@ -254,7 +285,7 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
 def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: ExtensionSpring, angle_range=None,
                        min_tension: float | None = None, eyelet=None, turn: int | None = None,
                        cable_bend_radius: float = 0.005, cycles: float | None = None) -> Design:
-    """Replace a spring of a lever by a real spring whose cable wraps a non-circular pulley.
+    """Replace a spring by a real spring whose cable wraps a non-circular pulley on the body it pulls.
 
     The profile is synthesized so that the real spring balances everything else of the
     design exactly over ``angle_range`` (see the module docstring); the returned design's
@@ -265,14 +296,20 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     Parameters
     ----------
     design : Design
-        One link pivoted at the origin (a lever; e.g. :func:`balancelab.lecture.single_link_spring`).
+        A design whose spring ``spring`` joins the ground to a body that turns about the origin by
+        one coordinate: a lever (e.g. :func:`balancelab.lecture.single_link_spring`), or link 1 or
+        the base copy of link 2 of the lecture's 2R arm with springs at the base
+        (:func:`balancelab.lecture.serial_2r_base_springs`), where each spring balances its own
+        coordinate; call once per spring. Without the spring, the energy must depend on that
+        coordinate alone.
     spring : int
         Index of the spring to replace; its ground attachment is the default eyelet.
     spring_model : ExtensionSpring
         The real spring (:mod:`balancelab.methods.practice.springs`): its rate, initial
         tension and body length; ``free_length`` of the result is its equivalent free length.
     angle_range : (float, float), optional
-        Link angles covered (rad), ``lo < hi``, less than 180° apart; default the design's range.
+        Angles of the body (its coordinate, rad) covered, ``lo < hi``, less than 180° apart;
+        default that coordinate's range in the design.
     min_tension : float, optional
         Smallest cable tension over the range (N), at least the initial tension; by default
         the tension between ``F_i`` and the spring's allowable pull (40 values tried) whose
@@ -292,7 +329,8 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     Design
         ``parameters`` hold ``k``, ``free_length``, ``initial_tension``, ``min_tension``,
         ``max_tension`` (N), ``stroke`` (m), ``max_stress`` (Pa), ``allowable_force`` (N) and
-        ``limiting_part``, ``min_radius_of_curvature`` (m), ``cable_length`` (m), ``lo``, ``hi`` (rad).
+        ``limiting_part``, ``min_radius_of_curvature`` (m), ``cable_length`` (m), ``lo``, ``hi`` (rad),
+        of the spring just replaced; the design's range of that coordinate is ``(lo, hi)``.
 
     Raises
     ------
@@ -311,16 +349,16 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     >>> d.balance_report().balanced, d.springs[0].free_length > 0
     (True, True)
     """
-    spring = _lever_link(design, spring)
+    spring, coordinate = _pivoted_link(design, spring)
     instance_of("spring_model", spring_model, ExtensionSpring, "a practice.springs.ExtensionSpring")
-    lo, hi = _angle_range(design, angle_range)
+    lo, hi = _angle_range(design, angle_range, coordinate)
     old = design.springs[spring]
     ground = old.a if old.a.body == 0 else old.b
     eyelet = ground.point if eyelet is None else planar_point("eyelet (m)", eyelet)
     cable_bend_radius = finite_real("cable_bend_radius (m)", cable_bend_radius, positive=True)
     k = spring_model.k
     limit = spring_limits(spring_model, cycles)["max_force"]
-    v_coef = _energy_series(design, spring, lo, hi)
+    v_coef = _energy_series(design, spring, coordinate, lo, hi)
     fine = cheb.chebval(np.linspace(-1, 1, 4001), v_coef)
     exchange = float(np.ptp(fine))         # the energy the spring must store and give back (J)
     if min_tension is None:
@@ -334,11 +372,11 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
     profile, checks, theta, tension = found
     sp_checks = _check_spring(spring_model, k, min_tension, float(np.max(tension)), cycles)
-    return _assemble(design, spring, old, spring_model, profile, theta, tension,
+    return _assemble(design, (spring, coordinate), old, spring_model, profile, theta, tension,
                      {**checks, **sp_checks, "min_tension": min_tension, "lo": lo, "hi": hi})
 
 
-def _assemble(design, spring, old, spring_model, profile, theta, tension, numbers) -> Design:
+def _assemble(design, which, old, spring_model, profile, theta, tension, numbers) -> Design:
     """The design with the real spring on its profile (cable length fixed by the stretch)."""
     k, l_eq = spring_model.k, spring_model.equivalent_free_length
     path = profile.cable(theta).path
@@ -346,7 +384,9 @@ def _assemble(design, spring, old, spring_model, profile, theta, tension, number
     profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
                                  profile.turn, cable_length)
     end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
-    new = Spring(k, l_eq, (0, profile.anchor), (1, end), name=old.name or f"k{spring + 1}",
+    spring, coordinate = which
+    body = old.b.body if old.a.body == 0 else old.a.body
+    new = Spring(k, l_eq, (0, profile.anchor), (body, end), name=old.name or f"k{spring + 1}",
                  realization=profile)
     springs = list(design.springs)
     springs[spring] = new
@@ -356,7 +396,10 @@ def _assemble(design, spring, old, spring_model, profile, theta, tension, number
     labels = dict(design.labels)
     if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
         labels["eyelet"] = (0, profile.anchor)
-    return design.replace(name=f"{design.name}: real spring on a non-circular pulley", springs=springs,
-                          kinematics=lever_kinematics(design.q_names[0], (lo, hi)), labels=labels,
+    several = sum(s.cable is not None for s in springs) > 1
+    name = design.name.split(": real spring")[0] + (": real springs on non-circular pulleys" if several
+                                                    else ": real spring on a non-circular pulley")
+    return design.replace(name=name, springs=springs,
+                          kinematics=_restricted(design, coordinate, lo, hi), labels=labels,
                           parameters=params, reference=(design.reference + "; " if design.reference else "")
                           + "non-circular pulley synthesized by balancelab.realize.noncircular_pulley")
