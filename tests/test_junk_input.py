@@ -16,7 +16,9 @@ from __future__ import annotations
 
 import inspect
 import math
+import tempfile
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,6 +28,7 @@ from hypothesis import strategies as st
 import balancelab as bl
 import balancelab.mechanisms as mech
 from balancelab.methods import deepak, lecture, lustig, realize, singh
+from balancelab.methods.practice.springs import ExtensionSpring
 from balancelab.methods.registry import examples
 
 FB = deepak.example_fourbar
@@ -36,6 +39,11 @@ CHAIN = lambda: lustig.SerialChain((0.3, 0.3), (2.0, 2.0), ((0.1, 0.0), (0.15, 0
                                    (bl.Spring(261.6, 0.0, (0, (0.0, 0.1)), (2, (0.1125, 0.0))),))
 
 #: public callables outside the registry: name -> (callable, args, kwargs) of a valid call
+_LEVER = lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+_REAL_SPRING = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
+_NONCIRCULAR = realize.noncircular_pulley(_LEVER, spring_model=_REAL_SPRING, angle_range=(-1.0, 1.0), min_tension=45.0)
+_EXPORT_TO = str(Path(tempfile.mkdtemp(prefix="balancelab-junk-")) / "pulley.csv")
+
 MANUAL = {
     # core constructors
     "Spring": (bl.Spring, (100.0, 0.0, (0, (0.0, 0.2)), (1, (0.1, 0.0))), {}),
@@ -133,6 +141,11 @@ MANUAL = {
     "pulley_balance_error": (realize.pulley_balance_error, (realize.pulley_lever(),), {"n": 51}),
     "pulley_error_curve": (realize.pulley_error_curve, (realize.pulley_lever(), [0.0, 0.01]), {"n": 51}),
     "negative_free_length_partner": (realize.negative_free_length_partner, (100.0, -0.05, 50.0), {}),
+    "noncircular_pulley": (realize.noncircular_pulley, (_LEVER,), {"spring_model": _REAL_SPRING,
+                                                                    "angle_range": (-1.0, 1.0)}),
+    "spring_limits": (realize.spring_limits, (_REAL_SPRING,), {}),
+    "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
+    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"n": 50}),
 }
 
 #: public names that are not builders taking user input, with the reason
@@ -150,6 +163,8 @@ EXEMPT = {
     "LUSTIG_TOPOLOGY": "a constant", "LUSTIG_UNKNOWNS": "a constant",
     "example_fourbar": "takes no argument", "lustig_case1": "takes no argument", "lustig_case2": "takes no argument",
     "lustig_case3": "takes no argument", "lustig_case4": "takes no argument",
+    "NoncircularProfile": "built by noncircular_pulley from its synthesis (Chebyshev series); not a user-facing builder",
+    "CableGeometry": "a result (NamedTuple)", "ProfilePart": "a result (NamedTuple)", "ProfileError": "an exception",
 }
 
 

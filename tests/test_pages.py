@@ -16,7 +16,7 @@ from conftest import build_mini_book
 
 ROOT = Path(__file__).resolve().parents[1]
 PAGES = ["intro", "ch1_counterweights", "ch2_zfl_springs", "ch3_building_zfl", "ch4_serial",
-         "ch5_fourbar", "ch6_scissors_peaucellier", "ch7_your_own_linkage", "ch8_ideal_to_real",
+         "ch5_fourbar", "ch6_scissors_peaucellier", "ch7_your_own_linkage", "ch8_ideal_to_real", "ch9_noncircular",
          "notes_on_sources"]
 CELL = re.compile(r"^```\{code-cell\}[^\n]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
 HIDING = ("remove-cell", "remove_cell", "remove-input", "remove_input")

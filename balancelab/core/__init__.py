@@ -9,9 +9,9 @@ What it may import: numpy (and sympy lazily), nothing else of balancelab. Everyt
 else imports core.
 """
 from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy, UnreachableConfiguration
-from .elements import G, Attachment, Joint, Load, Pulley, Spring, SymbolicParts, gravity_load
+from .elements import G, Attachment, CablePath, Joint, Load, Pulley, Spring, SymbolicParts, gravity_load
 from .kinematics import Kinematics, body_to_world, joint_gaps
 
 __all__ = ["BALANCE_TOLERANCE", "BalanceReport", "Design", "Energy", "UnreachableConfiguration", "G",
-           "Attachment", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load", "Kinematics",
+           "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load", "Kinematics",
            "body_to_world", "joint_gaps"]

@@ -204,7 +204,8 @@ class Design:
             _sbb=np.array([s.b.body for s in S], dtype=int),
             _sbp=np.array([s.b.point for s in S], dtype=float).reshape(-1, 2),
             _sk=np.array([s.k for s in S], dtype=float),
-            _sl0=np.array([s.free_length for s in S], dtype=float))
+            _sl0=np.array([s.free_length for s in S], dtype=float),
+            _scable=tuple(s.cable for s in S))
         for key, value in arrays.items():
             object.__setattr__(self, key, value)
 
@@ -396,6 +397,10 @@ class Design:
             vl.append(np.broadcast_to(-(f[0] * x + f[1] * y), lead))
         vs = []
         for i in range(len(self.springs)):
+            if self._scable[i] is not None:  # the length runs along a cable over a profile
+                ext = self._scable[i].length(poses[..., self._sab[i], :], poses[..., self._sbb[i], :]) - self._sl0[i]
+                vs.append(0.5 * self._sk[i] * ext * ext)
+                continue
             ax, ay = world(self._sab[i], self._sap[i])
             bx, by = world(self._sbb[i], self._sbp[i])
             dx, dy = bx - ax, by - ay

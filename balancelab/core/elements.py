@@ -23,7 +23,7 @@ from typing import NamedTuple
 
 from .validation import body_index, finite_real, planar_point
 
-__all__ = ["G", "Attachment", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load"]
+__all__ = ["G", "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load"]
 
 #: Gravitational acceleration (m/s^2), acting along -y.
 G: float = 9.81
@@ -197,6 +197,33 @@ class Pulley:
         return f"string over a pulley of radius {self.radius:.4g} m"
 
 
+class CablePath:
+    """Base of a spring realization whose length runs along a cable path (a non-circular pulley).
+
+    The spring's attachment ``a`` is its end on the ground side and ``b`` the cable's end on
+    the moving body; between them the cable follows a path that only the realization knows
+    (for instance the tangent from the anchor plus the arc wrapped on a profile fixed to the
+    body). A subclass implements :meth:`length`; the design's energy is then
+    ``k/2 (length - free_length)^2`` with that length, not the straight distance from ``a`` to
+    ``b``. The concrete profile lives in :mod:`balancelab.methods.realize.noncircular`.
+    Instances compare and hash by identity.
+    """
+
+    def length(self, pose_a, pose_b):
+        """Length (m) between the spring's load points, from the poses ``(x, y, angle)`` of its bodies.
+
+        Parameters
+        ----------
+        pose_a, pose_b : numpy.ndarray, shape (..., 3)
+            Poses of the bodies of attachments ``a`` and ``b``.
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+        """
+        raise NotImplementedError("a CablePath subclass must implement length(pose_a, pose_b)")
+
+
 @dataclass(frozen=True)
 class Spring:
     """A linear spring between two attachment points.
@@ -218,13 +245,14 @@ class Spring:
         The two attachments as ``(body, local point)``.
     name : str, optional
         Label (for instance ``"k1"``).
-    realization : {"coil", "gas", "pulley"} or Pulley
+    realization : {"coil", "gas", "pulley"} or Pulley or CablePath
         How the spring is built: a coil spring, a gas spring, or an ordinary spring
         pulling a string over a :class:`Pulley` centred at ``a`` (which must then be on
         the ground). ``"pulley"`` is short for ``Pulley()`` (an ideal pulley of radius
-        0 with the spring above it). The design's energy is always that of the ideal
-        spring; the realization is what :mod:`balancelab.methods.realize` models
-        exactly and what the figures draw.
+        0 with the spring above it). The design's energy is that of the ideal spring,
+        except for a :class:`CablePath` (a cable over a non-circular pulley), whose
+        length runs along the cable; the realization is what
+        :mod:`balancelab.methods.realize` models exactly and what the figures draw.
 
     Examples
     --------
@@ -245,8 +273,8 @@ class Spring:
         object.__setattr__(self, "free_length", finite_real("spring free_length (m)", self.free_length))
         object.__setattr__(self, "a", _attachment("spring attachment a", self.a))
         object.__setattr__(self, "b", _attachment("spring attachment b", self.b))
-        if not isinstance(self.realization, Pulley) and self.realization not in _REALIZATIONS:
-            raise ValueError(f"spring realization must be one of {_REALIZATIONS} or a Pulley, "
+        if not isinstance(self.realization, (Pulley, CablePath)) and self.realization not in _REALIZATIONS:
+            raise ValueError(f"spring realization must be one of {_REALIZATIONS}, a Pulley or a CablePath, "
                              f"got {self.realization!r}")
         if self.a.body == self.b.body:
             raise ValueError("a spring must join two different bodies; both attachments are on body "
@@ -266,6 +294,11 @@ class Spring:
         if isinstance(self.realization, Pulley):
             return self.realization
         return Pulley() if self.realization == "pulley" else None
+
+    @property
+    def cable(self) -> CablePath | None:
+        """The :class:`CablePath` of a spring whose length runs along a cable, else None."""
+        return self.realization if isinstance(self.realization, CablePath) else None
 
 
 @dataclass(frozen=True)

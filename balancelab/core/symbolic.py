@@ -54,6 +54,10 @@ def potential_energy_symbolic(design, parametric: bool = True, split: bool = Fal
         kin = design.kinematics
         if parametric and design.symbolic is not None and design.symbolic.kinematics is not None:
             kin = design.symbolic.kinematics
+        if any(s.cable is not None for s in design.springs):
+            raise NotImplementedError(f"{design.name}: a spring's length runs along a cable over a profile "
+                                      "(a CablePath), which has no symbolic form; check the design "
+                                      "numerically with balance_report()")
         syms = kin.symbols()
         loads, springs = _symbolic_parts(design, parametric)
         point = kin.symbolic_point

@@ -21,7 +21,8 @@ from ..core.design import Design
 from ..core.kinematics import body_to_world
 from .style import FONT, arrange_labels
 from .frame import STYLE, as_config, check_design, new_axes, range_grid, tex_label
-from .springs import pulley_coil_length, pulley_drawn_radius, spring_path, spring_style
+from .springs import (cable_angle, cable_coil_end, profile_outline, pulley_coil_length, pulley_drawn_radius,
+                      spring_path, spring_style)
 
 __all__ = ["Drawing", "Geometry", "draw", "extent"]
 
@@ -61,7 +62,8 @@ def _body_points(design: Design) -> list[list[tuple[float, float]]]:
         pts[j.body_j].append(tuple(j.point_j))
     for s in design.springs:
         pts[s.a.body].append(tuple(s.a.point))
-        pts[s.b.body].append(tuple(s.b.point))
+        if s.cable is None:   # a cable's clamp sits on its pulley, drawn with it
+            pts[s.b.body].append(tuple(s.b.point))
     for ld in design.loads:
         pts[ld.body].append(tuple(ld.point))
     for body, point in design.labels.values():
@@ -204,6 +206,8 @@ def _pulley_coil_ends(design: Design, geom: Geometry, W: np.ndarray, size: float
             run = float(np.max(np.hypot(*(W[:, ib] - W[:, ia]).T)))
             passed = run + 2 * math.pi * pulley_drawn_radius(s.pulley, size)
             ends.append(W[0, ia] + pulley_coil_length(passed, size) * u)
+        elif s.cable is not None:
+            ends.extend(cable_coil_end(s, [cable_angle(s, w) for w in W[:, ib]]))
     return np.array(ends).reshape(-1, 2)
 
 
@@ -336,6 +340,11 @@ class Drawing:
                                  zorder=4, solid_joinstyle="round", label=None)
             line.set_gid(f"spring:{s.name or i}")
             self.springs.append(line)
+            if s.cable is not None:   # the non-circular pulley, carried by the link
+                prof, = self.ax.fill([], [], facecolor="#dddddd", edgecolor=STYLE["string"], linewidth=1.0,
+                                     alpha=self.alpha, zorder=3.5)
+                self._pulleys[i] = prof
+                self.extras.append(prof)
             if s.pulley is not None:
                 c = Circle((0, 0), pulley_drawn_radius(s.pulley, self.size), facecolor="white",
                            edgecolor=STYLE["string"], linewidth=1.4, alpha=self.alpha, zorder=5)
@@ -424,6 +433,9 @@ class Drawing:
                 self._pulleys[i].center = (pa[0], pa[1])
                 self._pulleys[i].set_radius(radius)
                 line.set_data(*spring_path(s, pa, pb, self.size, radius))
+            elif s.cable is not None:
+                self._pulleys[i].set_xy(np.column_stack(profile_outline(s, cable_angle(s, pb))))
+                line.set_data(*spring_path(s, pa, pb, self.size))
             else:
                 line.set_data(*spring_path(s, pa, pb, self.size))
         self.load_segments = []

@@ -19,8 +19,8 @@ from ..core.elements import Pulley, Spring
 from ..methods.realize import pulley_string
 from .frame import STYLE
 
-__all__ = ["coil_path", "gas_path", "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path",
-           "spring_style"]
+__all__ = ["cable_angle", "cable_coil_end", "cable_path", "coil_path", "gas_path", "profile_outline",
+           "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path", "spring_style"]
 
 
 def coil_path(a, b, width: float, turns: int = 7, lead: float = 0.15):
@@ -207,7 +207,7 @@ def spring_style(spring: Spring) -> tuple:
     >>> spring_style(Spring(1.0, 0.0, (0, (0, 0)), (1, (1, 0))))
     ('#D55E00', '-')
     """
-    if spring.pulley is not None:
+    if spring.pulley is not None or spring.cable is not None:
         return STYLE["string"], "-"
     if spring.is_zfl:
         return STYLE["zfl"], "-"
@@ -243,6 +243,8 @@ def spring_path(spring: Spring, pa, pb, size: float, pulley_radius: float | None
     (0.0, 1.0)
     """
     pa, pb = np.asarray(pa, dtype=float), np.asarray(pb, dtype=float)
+    if spring.cable is not None:
+        return cable_path(spring, cable_angle(spring, pb), size)
     pulley = spring.pulley
     if pulley is not None:
         radius = pulley_drawn_radius(pulley, size) if pulley_radius is None else pulley_radius
@@ -252,3 +254,81 @@ def spring_path(spring: Spring, pa, pb, size: float, pulley_radius: float | None
     length = float(np.hypot(*(pb - pa)))
     turns = int(np.clip(round(length / (0.035 * size)), 2, 8))
     return coil_path(pa, pb, 0.025 * size, turns=turns)
+
+
+# ------------------------------------------------------------ non-circular pulley
+def cable_angle(spring: Spring, pb) -> float:
+    """The link angle (rad) at which a cable spring's clamp ``b`` is at the world point ``pb`` (m).
+
+    Examples
+    --------
+    >>> import math, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> d = bl.realize.noncircular_pulley(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2),
+    ...     spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0), angle_range=(-1.0, 1.0),
+    ...     min_tension=45.0)
+    >>> s = d.springs[0]
+    >>> round(cable_angle(s, d.world_points(0.4, [s.b])[0]), 12)
+    0.4
+    """
+    prof = spring.cable
+    local = np.asarray(spring.b.point, dtype=float)
+    rel = np.asarray(pb, dtype=float) - np.asarray(prof.pivot)
+    angle = math.atan2(rel[1], rel[0]) - math.atan2(local[1], local[0])
+    return float(np.angle(np.exp(1j * angle)))
+
+
+def _coil_direction(prof) -> np.ndarray:
+    u = np.asarray(prof.anchor, dtype=float)
+    return u / max(float(np.hypot(*u)), 1e-300)
+
+
+def cable_coil_end(spring: Spring, theta) -> np.ndarray:
+    """Where the drawn coil of a cable spring ends (m): beyond the eyelet, away from the pivot.
+
+    The coil is drawn at its true length, the cable's path minus the cable's length.
+    """
+    prof = spring.cable
+    length = prof.cable(theta).path - prof.cable_length
+    eyelet = np.add(prof.pivot, prof.anchor)
+    return eyelet + np.asarray(length)[..., None] * _coil_direction(prof)
+
+
+def profile_outline(spring: Spring, theta, n: int = 120):
+    """Closed polyline (x, y) of a cable spring's non-circular pulley at link angle ``theta`` (rad).
+
+    The profile's points come from the design (``spring.cable``), carried to the world.
+    """
+    prof = spring.cable
+    pts = prof.world(theta, prof.local_points(np.linspace(-1.0, 1.0, n)))
+    hub = prof.world(theta, np.zeros((1, 2)))
+    closed = np.concatenate([pts, hub, pts[:1]])
+    return closed[:, 0], closed[:, 1]
+
+
+def cable_path(spring: Spring, theta: float, size: float):
+    """Polyline (x, y) of a spring whose cable wraps a non-circular pulley, at link angle ``theta`` (rad).
+
+    From the coil's far end (beyond the eyelet, at the spring's true length) to the eyelet,
+    then the cable's straight part to its tangent point on the profile and the wrapped arc
+    to the clamp, all from the design's cable geometry (``spring.cable.cable(theta)``).
+
+    Examples
+    --------
+    >>> import math, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> d = bl.realize.noncircular_pulley(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2),
+    ...     spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0), angle_range=(-1.0, 1.0),
+    ...     min_tension=45.0)
+    >>> x, y = cable_path(d.springs[0], 0.3, 1.0)
+    >>> bool(np.allclose([x[-1], y[-1]], d.world_points(0.3, [d.springs[0].b])[0]))
+    True
+    """
+    prof = spring.cable
+    cab = prof.cable(theta)
+    eyelet = np.add(prof.pivot, prof.anchor)
+    cx, cy = coil_path(cable_coil_end(spring, theta), eyelet, 0.02 * size, turns=6)
+    x = np.linspace(float(cab.parameter), prof.end_parameter, 60)
+    arc = prof.world(theta, prof.local_points(x))
+    return (np.concatenate([cx, [cab.tangent[0]], arc[:, 0]]),
+            np.concatenate([cy, [cab.tangent[1]], arc[:, 1]]))

@@ -1,0 +1,50 @@
+"""Making a ZFL spring real: string over a pulley, negative free length, ordinary springs,
+and exact balance with an ordinary spring over a non-circular pulley.
+
+Sources: Lecture 35 (*Theory of Mechanisms*), realizing a zero-free-length spring with
+a string over a pulley and approximate balancing with regular (or gas) springs;
+Deepak & Ananthasuresh 2012, Sec. 1.1 (a negative-free-length spring in parallel with an
+ordinary one) and Sec. 2.3 / Fig. 20 (the pulley-and-string arrangement of the prototype).
+
+One module per concept:
+
+* :mod:`.pulley`: the exact model of a string over a round pulley (:func:`pulley_string`,
+  :func:`pulley_lever`, :func:`pulley_energy`, :func:`pulley_balance_error`);
+* :mod:`.negative`: an ordinary spring with a negative-free-length partner;
+* :mod:`.optimizer`: the best ordinary spring placed by an optimizer (approximate balance);
+* :mod:`.noncircular`: a cable from a real spring wound on a non-circular pulley whose
+  profile makes the balance exact (:func:`noncircular_pulley`), and :mod:`.profile_export`,
+  the profile as SVG, DXF and CSV files at true scale.
+
+Every name is importable from ``balancelab.methods.realize`` (``bl.realize``).
+"""
+# imported in course order: the registry orders a family's examples by module import
+from .pulley import (PulleyError, PulleyString, pulley_balance_error, pulley_energy, pulley_error_curve,
+                     pulley_lever, pulley_string)
+from .negative import negative_free_length_partner, parallel_springs_lever
+from .optimizer import ApproximationError, approximate_lever
+from .profile import CableGeometry, NoncircularProfile, ProfileError
+from .noncircular import noncircular_pulley, spring_limits
+from .profile_export import ProfilePart, export_profile, profile_part
+
+__all__ = [
+    "PulleyString",
+    "pulley_string",
+    "pulley_lever",
+    "pulley_energy",
+    "PulleyError",
+    "pulley_balance_error",
+    "pulley_error_curve",
+    "negative_free_length_partner",
+    "parallel_springs_lever",
+    "ApproximationError",
+    "approximate_lever",
+    "CableGeometry",
+    "NoncircularProfile",
+    "ProfileError",
+    "noncircular_pulley",
+    "spring_limits",
+    "ProfilePart",
+    "profile_part",
+    "export_profile",
+]

@@ -1,0 +1,405 @@
+"""Exact balance with a real spring: a cable wound on a non-circular pulley.
+
+A real extension spring (rate ``k``, body length ``L_b``, initial tension ``F_i``, so
+equivalent free length ``l = L_b - F_i/k > 0``, chapter 8) pulls a cable through a fixed
+eyelet ``A``; the cable runs to a profile fixed to the link and wraps on it. Whatever the
+free length, the link is balanced when the spring's energy makes up the rest of the
+energy:
+
+    k/2 u(theta)^2 + V(theta) = C,     u = spring length - l   (the stretch),
+
+so the tension is ``T = k u = sqrt(2 k (C - V))``. The cable's path ``P`` from the eyelet
+(tangent plus wrapped arc, :mod:`.profile`) changes with the link angle at the rate
+``dP/dtheta = h``, the distance of the cable's line from the pivot, so its torque is
+``-T h`` and balance needs ``h = -V'(theta) / T(theta)`` (canonical, counter-clockwise
+wrap). The line through the eyelet at that distance has its normal at
+``psi = alpha - theta + acos(h / rho)``; the profile is the envelope of these lines
+(support-function form). ``C`` is set by the smallest tension, ``min_tension``.
+
+The resulting :class:`~balancelab.core.design.Design` computes the spring's length from the
+cable (:class:`.profile.NoncircularProfile`, a :class:`~balancelab.core.elements.CablePath`):
+the tangent point is found from the tangency condition and the wrapped length from the
+profile's arc length, not from the formula above.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+
+from ...core.design import Design
+from ...core.elements import Spring
+from ...core.validation import finite_real, finite_reals, instance_of, planar_point
+from ...mechanisms.base import TreeKinematics
+from ..practice.springs import ExtensionSpring, tensile_strength
+from .profile import NoncircularProfile, ProfileError
+
+__all__ = ["noncircular_pulley", "spring_limits", "ProfileError"]
+
+#: Chebyshev degrees tried for the energy and the profile (doubling until the tail is round-off)
+_DEGREES = (32, 64, 128, 256)
+#: Shigley's static limits for an extension spring's ends: hook bending, hook torsion (x S_ut)
+_HOOK_BENDING, _HOOK_TORSION = 0.75, 0.40
+
+
+def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) -> dict:
+    """The largest pull (N) of a real extension spring: its body and its hooks.
+
+    Body: the allowable shear stress of :mod:`balancelab.methods.practice.springs`. Hooks
+    (a full loop of mean radius ``D/2`` bent up with a bend radius ``2 d``): bending at the
+    loop, ``sigma = F (16 D K_A / (pi d^3) + 4 / (pi d^2))`` with
+    ``K_A = (4 C^2 - C - 1) / (4 C (C - 1))``, at most 75 % of ``S_ut``; torsion at the bend,
+    ``tau = 8 F D K_B / (pi d^3)`` with ``K_B = (4 C_2 - 1) / (4 C_2 - 4)``, ``C_2 = 4``, at
+    most 40 % of ``S_ut`` (Shigley's static limits for extension springs).
+
+    Parameters
+    ----------
+    spring_model : ExtensionSpring
+        The real spring.
+    cycles : float, optional
+        Number of load cycles for the body's allowable stress (static when omitted).
+
+    Returns
+    -------
+    dict
+        ``body``, ``hook_bending``, ``hook_torsion`` and ``max_force`` (the smallest), in N.
+
+    Examples
+    --------
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> lim = spring_limits(ExtensionSpring(3e-3, 24e-3, 60, initial_tension=20.0))
+    >>> lim["max_force"] == min(lim["body"], lim["hook_bending"], lim["hook_torsion"])
+    True
+    """
+    instance_of("spring_model", spring_model, ExtensionSpring, "a practice.springs.ExtensionSpring")
+    d, D, C = spring_model.wire_diameter, spring_model.coil_diameter, spring_model.index
+    sut = float(tensile_strength(d, spring_model.material))
+    k_a = (4 * C * C - C - 1) / (4 * C * (C - 1))
+    bending = 16 * D * k_a / (math.pi * d ** 3) + 4 / (math.pi * d * d)   # Pa per N
+    c2 = 4.0
+    torsion = 8 * D * (4 * c2 - 1) / (4 * c2 - 4) / (math.pi * d ** 3)
+    out = {"body": spring_model.max_force(cycles), "hook_bending": _HOOK_BENDING * sut / bending,
+           "hook_torsion": _HOOK_TORSION * sut / torsion}
+    out["max_force"] = min(out.values())
+    return out
+
+
+def _pivoted_link(design: Design, spring) -> tuple[int, int]:
+    """``(spring, coordinate)``: the spring's moving body turns about the origin by one coordinate."""
+    instance_of("design", design, Design, "a balancelab Design")
+    if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)):
+        raise TypeError(f"spring must be the index of a spring of the design, got {spring!r}")
+    if not 0 <= spring < len(design.springs):
+        raise ValueError(f"spring must be in 0..{len(design.springs) - 1}, got {spring}")
+    s = design.springs[int(spring)]
+    body = s.b.body if s.a.body == 0 else s.a.body
+    kin = design.kinematics
+    row = getattr(kin, "angle_matrix", None)
+    fits = (row is not None and isinstance(kin, TreeKinematics) and (s.a.body == 0 or s.b.body == 0)
+            and np.count_nonzero(row[body]) == 1 and float(np.max(row[body])) == 1.0
+            and float(kin.angle_offset[body]) == 0.0)
+    if fits:
+        q = design.sample(16, seed=3)
+        fits = float(np.max(np.abs(design.poses(q)[:, body, :2]))) <= 1e-12
+    if not fits:
+        raise ValueError(f"{design.name}: spring {spring} must join the ground to a body that turns about the "
+                         "origin by one of the coordinates (a lever's link, or a 2R arm's link 1 or the base "
+                         "copy of link 2)")
+    return int(spring), int(np.flatnonzero(row[body])[0])
+
+
+def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
+    lo, hi = design.q_range[coordinate] if angle_range is None else finite_reals("angle_range (lo, hi, rad)", angle_range, 2)
+    if not lo < hi:
+        raise ValueError(f"angle_range must have lo < hi (rad), got ({lo}, {hi})")
+    if hi - lo >= math.pi:
+        raise ValueError(f"angle_range must span less than 180° (the cable's line turns with the link), "
+                         f"got {math.degrees(hi - lo):.1f}°" + (" (the design's whole range: pass angle_range=(lo, hi))"
+                                                                if angle_range is None else ""))
+    return float(lo), float(hi)
+
+
+def _restricted(design: Design, coordinate: int, lo: float, hi: float) -> TreeKinematics:
+    """The design's kinematics with the range of one coordinate narrowed to ``(lo, hi)``."""
+    kin = design.kinematics
+    q_range = np.array(kin.q_range, dtype=float)
+    q_range[coordinate] = (lo, hi)
+    return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
+                          angle_offset=kin.angle_offset)
+
+
+def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: float):
+    """Chebyshev series (in x in [-1, 1]) of the energy of everything but the spring, along one coordinate.
+
+    The other coordinates are held at two places in their ranges; the energy must differ between
+    them by a constant only (the rest depends on this coordinate alone), or no profile on this
+    body can balance it.
+    """
+    rest = design.replace(springs=[s for i, s in enumerate(design.springs) if i != spring],
+                          kinematics=_restricted(design, coordinate, lo, hi))
+    span = rest.q_range
+    for n in _DEGREES:
+        x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
+        q = np.repeat([span[:, 0] + 0.5 * (span[:, 1] - span[:, 0])], n, axis=0)
+        q[:, coordinate] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * x
+        v = rest.potential_energy(q).total
+        coef = cheb.chebfit(x, v, n - 1)
+        if np.max(np.abs(coef[-4:])) <= 1e-14 * max(np.max(np.abs(coef[1:])), 1e-300):
+            break
+    if np.max(np.abs(coef[1:])) == 0.0:
+        raise ValueError(f"{design.name}: without the spring nothing exchanges energy; nothing to balance")
+    q2 = np.repeat([span[:, 0] + 0.3 * (span[:, 1] - span[:, 0])], n, axis=0)
+    q2[:, coordinate] = q[:, coordinate]
+    drift = np.ptp(rest.potential_energy(q2).total - v)
+    if drift > 1e-9 * np.ptp(v):
+        raise ValueError(f"{design.name}: without spring {spring} the energy along {design.q_names[coordinate]} "
+                         f"also depends on the other coordinates (by {drift:.3g} J): one profile cannot balance it")
+    return coef
+
+
+def _synthesis(v_coef, k: float, min_tension: float, anchor, turn: int, lo: float, hi: float, n: int):
+    """Support function and normal angle at ``n`` Chebyshev nodes, and the tension there."""
+    half = 0.5 * (hi - lo)
+    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
+    theta = 0.5 * (lo + hi) + half * x
+    v = cheb.chebval(x, v_coef)
+    dv = turn * cheb.chebval(x, cheb.chebder(v_coef)) / half        # dV/d(canonical angle)
+    fine = cheb.chebval(np.linspace(-1, 1, 4001), v_coef)
+    top = max(float(fine.max()), float(v.max()))
+    tension = np.sqrt(min_tension ** 2 + 2 * k * (top - v))
+    h = -dv / tension
+    ax, ay = anchor[0], turn * anchor[1]
+    rho, alpha = math.hypot(ax, ay), math.atan2(ay, ax)
+    worst = int(np.argmax(np.abs(h)))
+    if abs(h[worst]) >= rho:
+        raise ProfileError(
+            f"the cable's line must pass {abs(h[worst]):.4g} m from the pivot at {math.degrees(theta[worst]):.2f}°, "
+            f"but the eyelet is only {rho:.4g} m from it: move the eyelet at least "
+            f"{abs(h[worst]) - rho:.3g} m farther, or raise min_tension (now {min_tension:.4g} N)")
+    psi = alpha - turn * theta + np.arccos(h / rho)
+    return x, theta, h, psi, tension
+
+
+def _profile(v_coef, k, min_tension, anchor, turn, lo, hi):
+    """The profile's Chebyshev series, at the smallest degree whose tail is round-off."""
+    for n in _DEGREES:
+        x, theta, h, psi, tension = _synthesis(v_coef, k, min_tension, anchor, turn, lo, hi, n)
+        ch, cp = cheb.chebfit(x, h, n - 1), cheb.chebfit(x, psi, n - 1)
+        tail = max(np.max(np.abs(ch[-4:])) / np.max(np.abs(ch)), np.max(np.abs(cp[-4:])) / np.max(np.abs(cp)))
+        if tail < 1e-14:
+            break
+    return ch, cp, (x, theta, tension)
+
+
+def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> dict:
+    """Convexity, curvature and a cable that reaches the profile from the right side, or ProfileError."""
+    x = np.linspace(-1.0, 1.0, 2001)
+    theta = profile.mid + profile.half * x
+    dpsi = cheb.chebval(x, cheb.chebder(profile.psi))
+    if not (np.all(dpsi < 0) or np.all(dpsi > 0)):
+        i = int(np.argmin(np.abs(dpsi)))
+        raise ProfileError(f"the cable's line stops turning relative to the link at {math.degrees(theta[i]):.2f}°: "
+                           "the lines have no envelope there (no profile); change min_tension or the eyelet")
+    rc = profile.radius_of_curvature(x)
+    i = int(np.argmin(rc))
+    if rc[i] <= 0:
+        raise ProfileError(f"the profile would be concave at {math.degrees(theta[i]):.2f}° (radius of curvature "
+                           f"{1000 * rc[i]:.3g} mm): a cable cannot wrap a concave arc; lower min_tension or use "
+                           "a stiffer spring (a larger change of tension over the range)")
+    if rc[i] < cable_bend_radius:
+        raise ProfileError(f"the profile's smallest radius of curvature, {1000 * rc[i]:.3g} mm at "
+                           f"{math.degrees(theta[i]):.2f}°, is below the cable's bending radius (cable_bend_radius) "
+                           f"{1000 * cable_bend_radius:.3g} mm by {1000 * (cable_bend_radius - rc[i]):.3g} mm")
+    h, psi = profile.support(x)
+    straight = profile.rho * np.sin(psi + profile.turn * theta - profile.alpha) + \
+        cheb.chebval(x, cheb.chebder(profile.h)) / dpsi
+    j = int(np.argmin(straight))
+    if straight[j] <= 0:
+        raise ProfileError(f"at {math.degrees(theta[j]):.2f}° the eyelet lies on the wrong side of the tangent "
+                           "point (the cable would have to wrap the other way): use the other turn")
+    return {"min_radius_of_curvature": float(rc[i]), "min_straight": float(straight[j])}
+
+
+def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
+    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``."""
+    start = max(spring_model.initial_tension, 0.02 * limit)
+    best, first_error = None, None
+    for tension in np.geomspace(start, limit, 40):
+        try:
+            found = _choose_turn(v_coef, k, float(tension), eyelet, turn, lo, hi, cable_bend_radius)
+        except ProfileError as err:
+            first_error = first_error or err
+            continue
+        size = float(np.max(np.hypot(*found[0].local_points(np.linspace(-1.0, 1.0, 201)).T)))
+        if best is None or size < best[2]:
+            best = (float(tension), found, size)
+    if best is None:
+        raise ProfileError(f"no min_tension between {start:.4g} N and {limit:.4g} N (above it the spring is "
+                           f"overstressed at the range's end) gives a "
+                           f"wrappable profile; at {start:.4g} N: {first_error}")
+    return best[:2]
+
+
+def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+    ch, cp, (x, theta, tension) = _profile(v_coef, k, min_tension, eyelet, turn, lo, hi)
+    profile = NoncircularProfile(ch, cp, (lo, hi), eyelet, (0.0, 0.0), turn, 0.0)
+    checks = _check_wrappable(profile, cable_bend_radius)
+    return profile, checks, theta, tension
+
+
+def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+    """The profile for ``turn``, or (``turn=None``) for the wrap that holds the pivot inside, else the other."""
+    if turn is not None:
+        if isinstance(turn, bool) or turn not in (1, -1):
+            raise ValueError(f"turn must be 1 (counter-clockwise), -1 (clockwise) or None, got {turn!r}")
+        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, cable_bend_radius)
+    mean_slope = cheb.chebval(np.linspace(-1, 1, 101), cheb.chebder(v_coef)).mean()
+    first = -1 if mean_slope > 0 else 1      # h = -turn V'/T > 0: the pivot inside the profile
+    try:
+        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, cable_bend_radius)
+    except ProfileError as err:
+        try:
+            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, cable_bend_radius)
+        except ProfileError:
+            raise err from None
+
+
+def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
+    limits = spring_limits(spring_model, cycles)
+    if min_tension < spring_model.initial_tension:
+        raise ProfileError(f"min_tension {min_tension:.4g} N is below the spring's initial tension "
+                           f"{spring_model.initial_tension:.4g} N: the coils would close and the cable go slack")
+    part = min(("body", "hook_bending", "hook_torsion"), key=limits.get)
+    if max_tension > limits["max_force"]:
+        raise ProfileError(
+            f"the spring is overstressed: its largest tension {max_tension:.4g} N exceeds what its "
+            f"{part.replace('_', ' ')} allows, {limits['max_force']:.4g} N, by "
+            f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring or a lower min_tension")
+    stroke = (max_tension - min_tension) / k
+    return {"max_tension": max_tension, "stroke": stroke, "allowable_force": limits["max_force"],
+            "limiting_part": part, "max_stress": float(spring_model.stress(max_tension)),
+            "max_length": spring_model.equivalent_free_length + max_tension / k}
+
+
+def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: ExtensionSpring, angle_range=None,
+                       min_tension: float | None = None, eyelet=None, turn: int | None = None,
+                       cable_bend_radius: float = 0.005, cycles: float | None = None) -> Design:
+    """Replace a spring by a real spring whose cable wraps a non-circular pulley on the body it pulls.
+
+    The profile is synthesized so that the real spring balances everything else of the
+    design exactly over ``angle_range`` (see the module docstring); the returned design's
+    spring energy comes from the cable's path (tangent from the eyelet plus wrapped arc),
+    and its range is ``angle_range``: outside it the cable leaves the profile and the
+    energy refuses to evaluate (:class:`ProfileError` names the covered range).
+
+    Parameters
+    ----------
+    design : Design
+        A design whose spring ``spring`` joins the ground to a body that turns about the origin by
+        one coordinate: a lever (e.g. :func:`balancelab.lecture.single_link_spring`), or link 1 or
+        the base copy of link 2 of the lecture's 2R arm with springs at the base
+        (:func:`balancelab.lecture.serial_2r_base_springs`), where each spring balances its own
+        coordinate; call once per spring. Without the spring, the energy must depend on that
+        coordinate alone.
+    spring : int
+        Index of the spring to replace; its ground attachment is the default eyelet.
+    spring_model : ExtensionSpring
+        The real spring (:mod:`balancelab.methods.practice.springs`): its rate, initial
+        tension and body length; ``free_length`` of the result is its equivalent free length.
+    angle_range : (float, float), optional
+        Angles of the body (its coordinate, rad) covered, ``lo < hi``, less than 180° apart;
+        default that coordinate's range in the design.
+    min_tension : float, optional
+        Smallest cable tension over the range (N), at least the initial tension; by default
+        the tension between ``F_i`` and the spring's allowable pull (40 values tried) whose
+        profile is wrappable and most compact (nearest the pivot at its farthest point).
+    eyelet : (float, float), optional
+        Where the cable leaves the ground (m), world frame; default the spring's ground attachment.
+    turn : {1, -1}, optional
+        Wrap counter-clockwise (1) or clockwise (-1); default: the wrap that keeps the pivot
+        inside the profile, else the other one.
+    cable_bend_radius : float
+        Smallest radius (m) the cable may be bent to, > 0; the profile must not be sharper.
+    cycles : float, optional
+        Load cycles for the spring's allowable stress (static when omitted).
+
+    Returns
+    -------
+    Design
+        ``parameters`` hold ``k``, ``free_length``, ``initial_tension``, ``min_tension``,
+        ``max_tension`` (N), ``stroke`` (m), ``max_stress`` (Pa), ``allowable_force`` (N) and
+        ``limiting_part``, ``min_radius_of_curvature`` (m), ``cable_length`` (m), ``lo``, ``hi`` (rad),
+        of the spring just replaced; the design's range of that coordinate is ``(lo, hi)``.
+
+    Raises
+    ------
+    ProfileError
+        When no wrappable profile exists or the spring cannot carry it: the message names what
+        fails (eyelet too close, concave profile, curvature below the cable's bending radius,
+        overstressed spring or hook, slack cable) and by how much.
+
+    Examples
+    --------
+    >>> import math, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> lever = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    >>> real = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=20.0)
+    >>> d = noncircular_pulley(lever, spring_model=real, angle_range=(-math.pi / 3, math.pi / 3))
+    >>> d.balance_report().balanced, d.springs[0].free_length > 0
+    (True, True)
+    """
+    spring, coordinate = _pivoted_link(design, spring)
+    instance_of("spring_model", spring_model, ExtensionSpring, "a practice.springs.ExtensionSpring")
+    lo, hi = _angle_range(design, angle_range, coordinate)
+    old = design.springs[spring]
+    ground = old.a if old.a.body == 0 else old.b
+    eyelet = ground.point if eyelet is None else planar_point("eyelet (m)", eyelet)
+    cable_bend_radius = finite_real("cable_bend_radius (m)", cable_bend_radius, positive=True)
+    k = spring_model.k
+    limit = spring_limits(spring_model, cycles)["max_force"]
+    v_coef = _energy_series(design, spring, coordinate, lo, hi)
+    fine = cheb.chebval(np.linspace(-1, 1, 4001), v_coef)
+    exchange = float(np.ptp(fine))         # the energy the spring must store and give back (J)
+    if min_tension is None:
+        top = math.sqrt(max(limit ** 2 - 2 * k * exchange, 0.0))   # highest smallest tension within the limit
+        _check_spring(spring_model, k, spring_model.initial_tension, math.hypot(spring_model.initial_tension,
+                      math.sqrt(2 * k * exchange)), cycles)
+        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, cable_bend_radius)
+    else:
+        min_tension = finite_real("min_tension (N)", min_tension, positive=True)
+        _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
+        found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
+    profile, checks, theta, tension = found
+    sp_checks = _check_spring(spring_model, k, min_tension, float(np.max(tension)), cycles)
+    return _assemble(design, (spring, coordinate), old, spring_model, profile, theta, tension,
+                     {**checks, **sp_checks, "min_tension": min_tension, "lo": lo, "hi": hi})
+
+
+def _assemble(design, which, old, spring_model, profile, theta, tension, numbers) -> Design:
+    """The design with the real spring on its profile (cable length fixed by the stretch)."""
+    k, l_eq = spring_model.k, spring_model.equivalent_free_length
+    path = profile.cable(theta).path
+    cable_length = float(np.mean(path - (tension / k + l_eq)))
+    profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
+                                 profile.turn, cable_length)
+    end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
+    spring, coordinate = which
+    body = old.b.body if old.a.body == 0 else old.a.body
+    new = Spring(k, l_eq, (0, profile.anchor), (body, end), name=old.name or f"k{spring + 1}",
+                 realization=profile)
+    springs = list(design.springs)
+    springs[spring] = new
+    lo, hi = profile.angle_range
+    params = {**design.parameters, "k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension,
+              "cable_length": cable_length, **numbers}
+    labels = dict(design.labels)
+    if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
+        labels["eyelet"] = (0, profile.anchor)
+    several = sum(s.cable is not None for s in springs) > 1
+    name = design.name.split(": real spring")[0] + (": real springs on non-circular pulleys" if several
+                                                    else ": real spring on a non-circular pulley")
+    return design.replace(name=name, springs=springs,
+                          kinematics=_restricted(design, coordinate, lo, hi), labels=labels,
+                          parameters=params, reference=(design.reference + "; " if design.reference else "")
+                          + "non-circular pulley synthesized by balancelab.realize.noncircular_pulley")

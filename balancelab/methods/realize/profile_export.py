@@ -1,0 +1,244 @@
+"""The non-circular pulley as a part to cut: SVG, DXF and CSV at true scale.
+
+The part is drawn in the link's frame (origin at the pivot, x along the link), in
+millimetres. Three outlines and a hole:
+
+* ``pitch``: the cable's centre line, the curve :func:`noncircular_pulley` synthesized
+  (an open curve, for reference and for checking the part);
+* ``groove``: the bottom of the cable's groove, the pitch curve moved inwards by the
+  cable's radius and closed round the axle's boss: the outline of the core plate;
+* ``flange``: the pitch curve moved outwards by the flange height and closed the same way:
+  the outline of the two plates that keep the cable in the groove;
+* ``axle``: the axle hole, a circle at the pivot.
+
+Stack a flange, the core plate and a flange (or print the three as one part) and fix them
+to the link with the x mark along the link. The DXF is written with ``ezdxf`` (the ``cad``
+extra: ``pip install balancelab[cad]``).
+"""
+from __future__ import annotations
+
+import csv
+import math
+import os
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from ...core.design import Design
+from ...core.validation import finite_real, instance_of, positive_int
+from .profile import NoncircularProfile
+
+__all__ = ["ProfilePart", "profile_part", "export_profile"]
+
+_LAYERS = {"groove": 1, "flange": 5, "pitch": 3, "axle": 1, "mark": 7}   # DXF colour numbers
+
+
+class ProfilePart(NamedTuple):
+    """The outlines of a non-circular pulley in the link's frame (m).
+
+    ``pitch`` (n, 2) open; ``groove`` and ``flange`` (m, 2) closed (last point not repeated),
+    counter-clockwise; ``axle_diameter`` (m); ``link_angle`` (n,) the link angle (rad) at which
+    each pitch point is where the cable leaves the profile.
+    """
+
+    pitch: np.ndarray
+    groove: np.ndarray
+    flange: np.ndarray
+    axle_diameter: float
+    link_angle: np.ndarray
+
+
+def _profile_of(design: Design, spring: int) -> NoncircularProfile:
+    instance_of("design", design, Design, "a balancelab Design")
+    if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)) or not 0 <= spring < len(design.springs):
+        raise ValueError(f"spring must be the index of one of the design's {len(design.springs)} springs, got {spring!r}")
+    prof = design.springs[spring].cable
+    if not isinstance(prof, NoncircularProfile):
+        raise ValueError(f"{design.name}: spring {spring} is not wound on a non-circular pulley "
+                         "(build one with realize.noncircular_pulley)")
+    return prof
+
+
+def _size(name: str, value) -> float:
+    """A part dimension (m): positive and below half a metre."""
+    value = finite_real(f"{name} (m)", value, positive=True)
+    if value > 0.5:
+        raise ValueError(f"{name} must be below 0.5 m (a pulley's part), got {value} m")
+    return value
+
+
+def _hull(points: np.ndarray) -> np.ndarray:
+    from scipy.spatial import ConvexHull
+
+    return points[ConvexHull(points).vertices]
+
+
+def _closed(arc: np.ndarray, hub: float) -> np.ndarray:
+    t = np.linspace(0, 2 * math.pi, 181)[:-1]
+    return _hull(np.concatenate([arc, hub * np.stack([np.cos(t), np.sin(t)], -1)]))
+
+
+def _even_in_arc_length(prof: NoncircularProfile, n: int) -> np.ndarray:
+    """Profile parameters of ``n`` points evenly spaced along the curve (in the order of growing psi)."""
+    dense = np.linspace(-1.0, 1.0, 4 * n + 1)
+    s = prof.arc_length(dense)
+    if s[-1] < s[0]:
+        dense, s = dense[::-1], s[::-1]
+    return np.interp(np.linspace(s[0], s[-1], n), s, dense)
+
+
+def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diameter: float = 0.008,
+                 cable_diameter: float = 0.0015, flange: float = 0.004, boss: float = 0.004) -> ProfilePart:
+    """The outlines of the non-circular pulley of ``design``'s spring ``spring``, ready to cut.
+
+    Parameters
+    ----------
+    design : Design
+        From :func:`balancelab.realize.noncircular_pulley`.
+    spring : int
+        Index of the spring wound on the profile.
+    n : int
+        Points on the pitch curve, >= 10, evenly spaced along it.
+    axle_diameter : float
+        Diameter of the axle hole (m), > 0.
+    cable_diameter : float
+        The cable's diameter (m), > 0: the groove is its radius deep below the pitch curve.
+    flange : float
+        Height of the flanges above the pitch curve (m), > 0.
+    boss : float
+        Material kept round the axle hole (m), > 0.
+
+    Returns
+    -------
+    ProfilePart
+
+    Raises
+    ------
+    ValueError
+        When the axle's boss would reach the groove (the cable would run on the boss): the
+        message says by how much.
+
+    Examples
+    --------
+    >>> import math, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> lever = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    >>> d = bl.realize.noncircular_pulley(lever, spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0),
+    ...                                   angle_range=(-math.pi / 3, math.pi / 3), min_tension=45.0)
+    >>> part = profile_part(d, n=500)
+    >>> part.pitch.shape, part.groove.shape[1]
+    ((500, 2), 2)
+    """
+    prof = _profile_of(design, spring)
+    n = positive_int("n (points on the pitch curve, at least 10)", n, minimum=10)
+    axle, cable, flange, boss = (_size(name, v) for name, v in (("axle_diameter", axle_diameter),
+                                 ("cable_diameter", cable_diameter), ("flange", flange), ("boss", boss)))
+    x = _even_in_arc_length(prof, n)
+    pitch, normal = prof.local_points(x), prof.normals(x)
+    h = np.sum(pitch * normal, -1)            # distance of each tangent line from the pivot
+    hub = axle / 2 + boss
+    room = float(np.min(h)) - cable / 2 - hub
+    if room <= 0:
+        raise ValueError(f"the axle's boss (radius {1000 * hub:.3g} mm) reaches {1000 * -room:.3g} mm into the "
+                         "cable's groove: use a smaller axle_diameter, boss or cable_diameter, or a profile "
+                         "farther from the pivot")
+    groove = _closed(pitch - cable / 2 * normal, hub)
+    outer = _closed(pitch + flange * normal, hub)
+    return ProfilePart(pitch, groove, outer, axle, prof.mid + prof.half * x)
+
+
+def _svg(part: ProfilePart, path: Path) -> None:
+    mm = 1000.0
+    allp = np.concatenate([part.flange, part.pitch]) * mm
+    lo, hi = allp.min(0) - 5, allp.max(0) + 5
+    w, h = hi - lo
+
+    def d(points, closed):
+        body = " ".join(f"{x:.4f},{-y:.4f}" for x, y in points * mm)
+        return f"M {body}" + (" Z" if closed else "")
+
+    r = part.axle_diameter / 2 * mm
+    lines = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.4f}mm" height="{h:.4f}mm" '
+             f'viewBox="{lo[0]:.4f} {-hi[1]:.4f} {w:.4f} {h:.4f}">',
+             "<title>non-circular pulley (balancelab), mm, link frame: x along the link, y up</title>",
+             f'<path id="flange" d="{d(part.flange, True)}" fill="none" stroke="blue" stroke-width="0.1"/>',
+             f'<path id="groove" d="{d(part.groove, True)}" fill="none" stroke="red" stroke-width="0.1"/>',
+             f'<path id="pitch" d="{d(part.pitch, False)}" fill="none" stroke="green" stroke-width="0.1" '
+             'stroke-dasharray="1 1"/>',
+             f'<circle id="axle" cx="0" cy="0" r="{r:.4f}" fill="none" stroke="red" stroke-width="0.1"/>',
+             f'<path id="mark" d="M {r + 1:.4f},0 L {r + 4:.4f},0" stroke="black" stroke-width="0.2"/>',
+             "</svg>"]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def _dxf(part: ProfilePart, path: Path) -> None:
+    try:
+        import ezdxf
+    except ImportError:   # pragma: no cover - the cad extra is part of the test set-up
+        raise ImportError("DXF export needs ezdxf: pip install 'balancelab[cad]'") from None
+    doc = ezdxf.new("R2010", units=4)    # millimetres
+    for name, colour in _LAYERS.items():
+        doc.layers.add(name.upper(), color=colour)
+    msp = doc.modelspace()
+    mm = 1000.0
+    msp.add_lwpolyline((part.flange * mm).tolist(), close=True, dxfattribs={"layer": "FLANGE"})
+    msp.add_lwpolyline((part.groove * mm).tolist(), close=True, dxfattribs={"layer": "GROOVE"})
+    msp.add_lwpolyline((part.pitch * mm).tolist(), close=False, dxfattribs={"layer": "PITCH"})
+    r = part.axle_diameter / 2 * mm
+    msp.add_circle((0.0, 0.0), r, dxfattribs={"layer": "AXLE"})
+    msp.add_line((r + 1, 0.0), (r + 4, 0.0), dxfattribs={"layer": "MARK"})
+    doc.saveas(path)
+
+
+def _csv(part: ProfilePart, path: Path) -> None:
+    with path.open("w", newline="", encoding="utf-8") as f:
+        f.write("# balancelab non-circular pulley: the cable's centre line (pitch curve) in the link frame, "
+                f"mm (x along the link, origin at the pivot); axle diameter {1000 * part.axle_diameter:.4f} mm\n")
+        w = csv.writer(f)
+        w.writerow(["link_angle_deg", "x_mm", "y_mm"])
+        for a, (x, y) in zip(np.degrees(part.link_angle), part.pitch * 1000.0):
+            w.writerow([f"{a:.6f}", f"{x:.6f}", f"{y:.6f}"])
+
+
+def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
+    """Write the non-circular pulley of ``design`` to ``path`` (.svg, .dxf or .csv) at true scale, in mm.
+
+    Parameters
+    ----------
+    design : Design
+        From :func:`balancelab.realize.noncircular_pulley`.
+    path : str or pathlib.Path
+        The file to write; its suffix chooses the format: ``.svg`` (flange blue, groove and
+        axle red, pitch curve green dashed), ``.dxf`` (layers FLANGE, GROOVE, PITCH, AXLE, MARK)
+        or ``.csv`` (the pitch curve, one point a row, with the link angle it serves).
+    spring : int
+        Index of the spring wound on the profile.
+    **options
+        Passed to :func:`profile_part` (``n``, ``axle_diameter``, ``cable_diameter``, ``flange``, ``boss``).
+
+    Returns
+    -------
+    pathlib.Path
+
+    Examples
+    --------
+    >>> import math, tempfile, pathlib, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> lever = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    >>> d = bl.realize.noncircular_pulley(lever, spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0),
+    ...                                   angle_range=(-math.pi / 3, math.pi / 3), min_tension=45.0)
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     out = export_profile(d, pathlib.Path(tmp) / "pulley.csv", n=100)
+    ...     len(out.read_text().splitlines())
+    102
+    """
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a file name (str or pathlib.Path), got {type(path).__name__}")
+    path = Path(path)
+    writers = {".svg": _svg, ".dxf": _dxf, ".csv": _csv}
+    if path.suffix.lower() not in writers:
+        raise ValueError(f"path must end in .svg, .dxf or .csv, got {path.name!r}")
+    part = profile_part(design, spring, **options)
+    writers[path.suffix.lower()](part, path)
+    return path

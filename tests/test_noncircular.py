@@ -1,0 +1,375 @@
+"""Exact balance with a real spring over a non-circular pulley: model, independent cable check, exports."""
+from __future__ import annotations
+
+import csv
+import math
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+import balancelab as bl
+from balancelab import G
+from balancelab.core.design import UnreachableConfiguration
+from balancelab.methods import realize as rz
+from balancelab.methods.practice.springs import ExtensionSpring
+
+MASS, LENGTH, B, C = 2.0, 0.5, 0.3, 0.2
+RANGE = (-math.pi / 3, math.pi / 3)
+REAL = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
+
+
+@pytest.fixture(scope="module")
+def lever():
+    return bl.lecture.single_link_spring(MASS, LENGTH, B, C)
+
+
+@pytest.fixture(scope="module")
+def design(lever):
+    return rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0)
+
+
+def _load_torque(theta):
+    """Torque (N m, counter-clockwise) of the weight at the tip: -m g r cos(theta)."""
+    return -MASS * G * LENGTH * np.cos(theta)
+
+
+def _cross(u, v):
+    return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+
+
+# --------------------------------------------------------------- the library's model
+def test_real_spring_and_balance_report(design):
+    s = design.springs[0]
+    assert s.k == pytest.approx(REAL.k) and s.free_length == pytest.approx(REAL.equivalent_free_length)
+    assert s.free_length > 0 and not s.is_zfl and s.cable is s.realization
+    rep = design.balance_report()
+    assert rep.balanced and rep.variation < 1e-12
+    assert np.allclose(design.q_range, [RANGE])
+
+
+def test_spring_torque_equals_load_torque_at_1000_random_angles(design):
+    theta = np.random.default_rng(7).uniform(*RANGE, 1000)
+    prof = design.springs[0].cable
+    cab = prof.cable(theta)
+    poses = design.poses(theta)
+    length = prof.length(poses[:, 0], poses[:, 1])   # the spring's length, as the design's energy uses it
+    tension = REAL.k * (length - REAL.equivalent_free_length)
+    assert np.all(tension >= REAL.initial_tension)
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    spring_torque = tension * _cross(cab.tangent, pull)   # about the pivot at the origin
+    scale = MASS * G * LENGTH
+    assert np.max(np.abs(spring_torque + _load_torque(theta))) < 1e-9 * scale
+    # and the design's own energy agrees: its derivative is zero to the differences' accuracy
+    assert np.max(np.abs(design.generalized_force(theta))) < 1e-6 * scale
+
+
+def test_path_changes_at_the_rate_of_the_cable_lines_distance_from_the_pivot(design):
+    prof = design.springs[0].cable
+    theta = np.linspace(RANGE[0] + 0.01, RANGE[1] - 0.01, 50)
+    step = 1e-6
+    rate = (prof.cable(theta + step).path - prof.cable(theta - step).path) / (2 * step)
+    cab = prof.cable(theta)
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    # virtual work: the pull's torque about the pivot is -T dP/dtheta
+    assert np.allclose(rate, -_cross(cab.tangent, pull), atol=1e-8)
+    assert np.all(cab.straight > 0) and np.all(cab.wrapped >= -1e-12)
+
+
+def test_outside_the_covered_range_the_design_says_where_it_fails(design):
+    with pytest.raises(UnreachableConfiguration, match=r"-60\.00°, 60\.00°"):
+        design.potential_energy(1.3)
+    with pytest.raises(rz.ProfileError, match=r"covers -60\.000° to 60\.000°"):
+        design.springs[0].cable.cable(np.array([0.0, 1.4]))
+
+
+def test_no_symbolic_energy_for_a_cable_path(design):
+    with pytest.raises(NotImplementedError, match="cable"):
+        design.potential_energy_symbolic()
+
+
+def test_circle_is_a_constant_support_function():
+    R, rho = 0.02, 0.3
+    prof = rz.NoncircularProfile([R], [math.pi / 2 + math.acos(R / rho), -1.0], (-1.0, 1.0), (0.0, rho),
+                                 (0.0, 0.0), 1, 0.0)
+    x = np.linspace(-1, 1, 21)
+    assert np.allclose(np.hypot(*prof.local_points(x).T), R, atol=1e-15)
+    assert np.allclose(prof.radius_of_curvature(x), R, atol=1e-15)
+    cab = prof.cable(np.linspace(-0.9, 0.9, 7))
+    assert np.allclose(cab.straight, math.sqrt(rho ** 2 - R ** 2), atol=1e-14)
+    assert np.allclose(cab.wrapped, R * (np.linspace(-0.9, 0.9, 7) + 1.0), atol=1e-14)
+
+
+# ------------------------------------------------------- independent check from the export
+def _read_csv(path):
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))]
+    assert rows[0] == ["link_angle_deg", "x_mm", "y_mm"]
+    return np.array(rows[1:], dtype=float)
+
+
+def _cable_from_points(points, end, anchor, theta):
+    """Path length and torque arm of a taut cable from ``anchor`` round the polyline ``points``.
+
+    Our own computation: the tangent vertex is the interior extremum of the direction seen
+    from the anchor; the wrapped length is the polyline's length from there to the end ``end``.
+    """
+    c, s = math.cos(theta), math.sin(theta)
+    world = points @ np.array([[c, s], [-s, c]])
+    rel = world - anchor
+    ang = np.unwrap(np.arctan2(rel[:, 1], rel[:, 0]))
+    i = int(np.argmax(ang)) if 0 < np.argmax(ang) < len(ang) - 1 else int(np.argmin(ang))
+    assert 0 < i < len(ang) - 1, "the cable's tangent point is off the exported profile"
+    seg = np.hypot(*np.diff(world, axis=0).T)
+    e = 0 if np.hypot(*(points[0] - end)) < np.hypot(*(points[-1] - end)) else len(points) - 1
+    wrapped = seg[:i].sum() if e == 0 else seg[i:].sum()
+    straight = float(np.hypot(*rel[i]))
+    arm = float(_cross(world[i], -rel[i] / straight))
+    return straight + wrapped, arm
+
+
+def test_exported_points_balance_within_the_bound_their_spacing_implies(design, tmp_path):
+    n = 2000
+    path = rz.export_profile(design, tmp_path / "pulley.csv", n=n)
+    pts = _read_csv(path)[:, 1:] / 1000.0
+    assert len(pts) == n
+    spacing = float(np.max(np.hypot(*np.diff(pts, axis=0).T)))
+    a, b, c = pts[:-2], pts[1:-1], pts[2:]
+    circum = (np.hypot(*(a - b).T) * np.hypot(*(b - c).T) * np.hypot(*(c - a).T)
+              / (2 * np.abs(_cross(b - a, c - a))))
+    r_min = float(np.min(circum))
+    s = design.springs[0]
+    anchor, end = np.array(s.a.point), np.array(s.b.point)
+    cable_length = design.parameters["cable_length"]
+    rho = float(np.hypot(*anchor))
+    arc = float(np.hypot(*np.diff(pts, axis=0).T).sum())
+    # a vertex is at most `spacing` along the curve from the true tangent point: the path is
+    # stationary there, so it errs by at most spacing^2 / r_min; chords fall short of the arc by
+    # at most arc spacing^2 / (24 r_min^2); the line through the vertex moves by spacing^2 / (2 r_min)
+    # at the profile, i.e. its distance from the pivot by that times rho / (shortest straight part)
+    theta = np.random.default_rng(3).uniform(RANGE[0] + 0.02, RANGE[1] - 0.02, 200)
+    straight_min = float(np.min(s.cable.cable(theta).straight))
+    d_path = spacing ** 2 / r_min + arc * spacing ** 2 / (24 * r_min ** 2) + 2e-9
+    d_arm = spacing ** 2 / (2 * r_min) * rho / straight_min + 2e-9
+    worst, bound = 0.0, 0.0
+    for th in theta:
+        length, arm = _cable_from_points(pts, end, anchor, th)
+        tension = s.k * (length - cable_length - s.free_length)
+        residual = abs(tension * arm + _load_torque(th))
+        allowed = abs(tension) * d_arm + s.k * d_path * abs(arm)
+        worst, bound = max(worst, residual / allowed), max(bound, allowed)
+    assert worst <= 1.0
+    assert bound < 1e-4 * MASS * G * LENGTH   # 2,000 points: within 1e-4 of the load's torque
+
+
+# ------------------------------------------------------------------ exports read back
+def _polyline_distance(points, poly):
+    """Largest distance from any of ``points`` to the closed polyline ``poly`` (its segments)."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    ab = b - a
+    t = np.clip(np.sum((points[:, None] - a) * ab, -1) / np.sum(ab * ab, -1), 0.0, 1.0)
+    d = np.hypot(*(points[:, None] - (a + t[..., None] * ab)).transpose(2, 0, 1))
+    return float(np.max(np.min(d, axis=1)))
+
+
+def test_dxf_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    part = rz.profile_part(design, n=800)
+    doc = ezdxf.readfile(rz.export_profile(design, tmp_path / "pulley.dxf", n=800))
+    assert doc.header["$INSUNITS"] == 4    # millimetres
+    msp = doc.modelspace()
+    got = {e.dxf.layer: e for e in msp if e.dxftype() in ("LWPOLYLINE", "CIRCLE")}
+    pitch = np.array([p[:2] for p in got["PITCH"].get_points()]) / 1000
+    assert np.max(np.abs(pitch - part.pitch)) < 1e-5
+    for layer, model in (("GROOVE", part.groove), ("FLANGE", part.flange)):
+        poly = np.array([p[:2] for p in got[layer].get_points()]) / 1000
+        assert got[layer].closed and np.max(np.abs(poly - model)) < 1e-5
+    assert got["AXLE"].dxf.radius / 1000 == pytest.approx(part.axle_diameter / 2, abs=1e-5)
+    # the groove is the cable's radius inside the pitch curve, the flange 4 mm outside it
+    prof = design.springs[0].cable
+    x = np.linspace(-1, 1, 800)
+    groove_arc = prof.local_points(x) - 0.00075 * prof.normals(x)
+    assert _polyline_distance(groove_arc, np.array([p[:2] for p in got["GROOVE"].get_points()]) / 1000) < 1e-5
+
+
+def test_svg_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
+    part = rz.profile_part(design, n=600)
+    root = ET.parse(rz.export_profile(design, tmp_path / "pulley.svg", n=600)).getroot()
+    assert root.get("width").endswith("mm")
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    paths = {p.get("id"): p.get("d") for p in root.findall("s:path", ns)}
+    for name, model in (("pitch", part.pitch), ("groove", part.groove), ("flange", part.flange)):
+        xy = np.array(re.findall(r"(-?[\d.]+),(-?[\d.]+)", paths[name]), dtype=float) / 1000
+        xy[:, 1] *= -1   # SVG's y runs down
+        assert np.max(np.abs(xy - model)) < 1e-5, name
+    axle = root.find("s:circle", ns)
+    assert float(axle.get("r")) / 1000 == pytest.approx(part.axle_diameter / 2, abs=1e-5)
+
+
+def test_the_part_holds_the_pivot_and_the_outlines_are_convex(design):
+    part = rz.profile_part(design)
+    for outline in (part.groove, part.flange):
+        nxt = np.roll(outline, -1, axis=0)
+        turn = _cross(nxt - outline, np.roll(nxt, -1, axis=0) - nxt)
+        assert np.all(turn >= -1e-15)          # counter-clockwise and convex
+        edges = _cross(nxt - outline, -outline)   # the pivot is on the inner side of every edge
+        assert np.all(edges > 0)
+    with pytest.raises(ValueError, match="boss"):
+        rz.profile_part(design, axle_diameter=0.05)
+    with pytest.raises(ValueError, match=r"\.svg, \.dxf or \.csv"):
+        rz.export_profile(design, "pulley.png")
+
+
+# --------------------------------------------------------------- existence and errors
+def test_default_tension_search_finds_a_wrappable_balanced_profile(lever):
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE)
+    p = d.parameters
+    assert d.balance_report().balanced
+    assert p["min_radius_of_curvature"] >= 0.005 and p["min_tension"] >= REAL.initial_tension
+    assert p["max_tension"] <= rz.spring_limits(REAL)["max_force"]
+    assert p["stroke"] == pytest.approx((p["max_tension"] - p["min_tension"]) / REAL.k)
+
+
+def test_concave_profile_is_refused_with_its_radius(lever):
+    with pytest.raises(rz.ProfileError, match=r"concave at -?\d+\.\d+° \(radius of curvature -[\d.]+"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=100.0, turn=1)
+
+
+def test_curvature_below_the_cables_bending_radius_is_refused(lever, design):
+    rmin = design.parameters["min_radius_of_curvature"]
+    with pytest.raises(rz.ProfileError, match=r"below the cable's bending radius \(cable_bend_radius\) 30 mm by [\d.]+ mm"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0,
+                              cable_bend_radius=0.03)
+    assert rmin < 0.03
+
+
+def test_overstressed_spring_and_hooks_are_refused(lever):
+    weak = ExtensionSpring(1.5e-3, 12e-3, 30, initial_tension=5.0)
+    with pytest.raises(rz.ProfileError, match=r"overstressed.*(body|hook).*by [\d.]+ %"):
+        rz.noncircular_pulley(lever, spring_model=weak, angle_range=RANGE, min_tension=20.0)
+    lim = rz.spring_limits(REAL)
+    assert lim["max_force"] == min(lim["body"], lim["hook_bending"], lim["hook_torsion"])
+
+
+def test_slack_cable_and_close_eyelet_are_refused(lever):
+    with pytest.raises(rz.ProfileError, match="below the spring's initial tension"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=30.0, turn=-1)
+    with pytest.raises(rz.ProfileError, match="eyelet is only 0.05 m"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, eyelet=(0.0, 0.05))
+
+
+def test_bad_input_names_the_parameter(lever):
+    with pytest.raises(ValueError, match="angle_range"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(1.0, -1.0))
+    with pytest.raises(ValueError, match="180"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(-2.0, 2.0))
+    with pytest.raises(TypeError, match="spring_model"):
+        rz.noncircular_pulley(lever, spring_model=100.0)
+    with pytest.raises(ValueError, match="spring must be in"):
+        rz.noncircular_pulley(lever, 3, spring_model=REAL)
+    with pytest.raises(ValueError, match="turn"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
+    with pytest.raises(ValueError, match="turns about the origin by one of the coordinates"):
+        rz.noncircular_pulley(bl.singh.scissors_lift(), spring_model=REAL, angle_range=(0.3, 0.9))
+
+
+def test_lamp_arm_two_pulleys_one_per_joint():
+    """The lecture's 2R lamp arm with springs at the base: link 1 and the base copy of link 2 each get a
+    real spring on its own profile (the parallelogram carries link 2's angle to the base)."""
+    lamp = bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+    real = ExtensionSpring(2.5e-3, 20e-3, 60, initial_tension=20.0)
+    one = rz.noncircular_pulley(lamp, 0, spring_model=real, angle_range=RANGE)
+    both = rz.noncircular_pulley(one, 1, spring_model=real, angle_range=RANGE)
+    assert all(s.cable is not None and s.free_length > 0 for s in both.springs)
+    assert np.allclose(both.q_range, [RANGE, RANGE]) and both.name.endswith("non-circular pulleys")
+    rep = both.balance_report()
+    assert rep.balanced and rep.variation < 1e-12
+    # each cable's torque balances the generalized force of the loads on its own coordinate
+    q = both.sample(300, seed=5)
+    loads = both.replace(springs=[]).generalized_force(q)
+    for j, s in enumerate(both.springs):
+        cab = s.cable.cable(q[:, j])
+        tension = s.k * (cab.path - s.cable.cable_length - s.free_length)
+        pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+        assert np.max(np.abs(tension * _cross(cab.tangent, pull) - loads[:, j])) < 1e-6 * np.max(np.abs(loads))
+
+
+# ------------------------------------------------------------------ drawing
+def test_drawing_follows_the_design_cable(design):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from balancelab.viz.springs import cable_angle, cable_path, profile_outline
+
+    s = design.springs[0]
+    for q in (-0.9, 0.0, 0.8):
+        end = design.world_points(q, [s.b])[0]
+        assert cable_angle(s, end) == pytest.approx(q, abs=1e-12)
+        x, y = cable_path(s, q, 1.0)
+        cab = s.cable.cable(q)
+        path = np.column_stack([x, y])
+        assert np.allclose(path[-1], end, atol=1e-12)                     # ends at the clamp
+        assert np.min(np.hypot(*(path - cab.tangent).T)) < 1e-12           # passes the tangent point
+        eyelet = np.add(s.cable.pivot, s.cable.anchor)
+        assert np.min(np.hypot(*(path - eyelet).T)) < 1e-12                # and the eyelet
+        # the coil is drawn at the spring's true length beyond the eyelet
+        assert np.hypot(*(path[0] - eyelet)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        ox, oy = profile_outline(s, q)
+        assert np.allclose(np.column_stack([ox, oy])[0], s.cable.world(q, s.cable.local_points(-1.0)))
+    fig = bl.draw(design, 0.3).figure
+    assert any(line.get_gid() == f"spring:{s.name}" for line in fig.axes[0].lines)
+    plt.close(fig)
+    anim = bl.animate(design, frames=6)
+    assert anim is not None
+    plt.close("all")
+
+
+# ------------------------------------------------------------------ properties
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mass=st.floats(0.5, 4.0), length=st.floats(0.2, 0.8), eyelet_r=st.floats(0.1, 0.6),
+       eyelet_a=st.floats(-math.pi, math.pi), lo=st.floats(-1.2, 0.3), span=st.floats(0.3, 1.6),
+       tension=st.floats(1.0, 4.0), turn=st.sampled_from([1, -1, None]))
+def test_every_profile_it_builds_balances_and_every_refusal_is_a_profile_error(mass, length, eyelet_r, eyelet_a,
+                                                                                lo, span, tension, turn):
+    lever = bl.lecture.single_link_spring(mass, length, 0.3, 0.2)
+    eyelet = (eyelet_r * math.cos(eyelet_a), eyelet_r * math.sin(eyelet_a))
+    try:
+        d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(lo, lo + span), eyelet=eyelet,
+                                  min_tension=tension * REAL.initial_tension, turn=turn)
+    except rz.ProfileError as err:
+        assert "°" in str(err) or " N" in str(err)   # it says where or by how much
+        return
+    theta = np.random.default_rng(0).uniform(lo, lo + span, 200)
+    cab = d.springs[0].cable.cable(theta)
+    tension_now = REAL.k * (cab.path - d.parameters["cable_length"] - REAL.equivalent_free_length)
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    residual = tension_now * _cross(cab.tangent, pull) - mass * G * length * np.cos(theta)
+    assert np.max(np.abs(residual)) < 1e-9 * mass * G * length
+    assert np.all(tension_now >= REAL.initial_tension * (1 - 1e-12))
+    assert d.parameters["min_radius_of_curvature"] >= 0.005 and d.balance_report().balanced
+
+
+def test_spring_limits_follow_the_hook_and_body_formulas():
+    # Shigley's hook stresses, written out here: bending at the loop (C1 = C), torsion at the bend (C2 = 4)
+    d, D = REAL.wire_diameter, REAL.coil_diameter
+    C1, C2 = D / d, 4.0
+    sut = 2211e6 / (d * 1000) ** 0.145                      # music wire, A / d^m
+    per_newton_bending = (4 * C1 ** 2 - C1 - 1) / (4 * C1 * (C1 - 1)) * 16 * D / (math.pi * d ** 3) \
+        + 4 / (math.pi * d ** 2)
+    per_newton_torsion = (4 * C2 - 1) / (4 * C2 - 4) * 8 * D / (math.pi * d ** 3)
+    lim = rz.spring_limits(REAL)
+    assert lim["hook_bending"] == pytest.approx(0.75 * sut / per_newton_bending, rel=1e-12)
+    assert lim["hook_torsion"] == pytest.approx(0.40 * sut / per_newton_torsion, rel=1e-12)
+    assert lim["body"] == pytest.approx(REAL.max_force(), rel=1e-12)
+    assert REAL.stress(lim["body"]) == pytest.approx(0.45 * sut, rel=1e-9)
+
+
+def test_a_full_turn_default_range_asks_for_angle_range(lever):
+    with pytest.raises(ValueError, match=r"pass angle_range=\(lo, hi\)"):
+        rz.noncircular_pulley(lever, spring_model=REAL)
