@@ -12,9 +12,12 @@ import io
 import json
 import os
 import re
+import secrets
 import subprocess
 import sys
 import textwrap
+import time
+import urllib.request
 from pathlib import Path
 from unittest import mock
 from urllib.parse import parse_qs, unquote, urlsplit
@@ -26,6 +29,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from balancelab.course import labtools, launch
+from conftest import CHROMIUM, CHROMIUM_ARGS, NEEDS_CHROMIUM, free_port
 
 ROOT = Path(__file__).resolve().parent.parent
 SOLUTIONS = sorted((ROOT / "labs" / "solutions").glob("*.ipynb"))
@@ -376,11 +380,12 @@ def test_colab_simulated_installs_the_course_and_runs_a_lab_to_its_first_explore
 
     # 1. not on Colab, no balancelab: one line saying how to install, nothing installed
     cell = launch.setup_source(repo, "main")
-    plain = subprocess.run([python, "-c", cell], env=_clean_env(), capture_output=True, text=True, timeout=60)
+    plain = subprocess.run([python, "-c", cell], env=_clean_env(), capture_output=True, text=True, timeout=60,
+                           cwd=tmp_path)   # not the checkout: "python -c" imports from its working directory
     assert plain.returncode == 0 and plain.stdout.startswith("Set-up: balancelab is not installed here.")
     # 2. on Colab with an address that does not exist: the cell fails and says what pip said
     bad = subprocess.run([python, "-c", launch.setup_source(repo + "-missing", "main")], env=colab_env,
-                         capture_output=True, text=True, timeout=300)
+                         capture_output=True, text=True, timeout=300, cwd=tmp_path)
     assert bad.returncode != 0 and f"pip could not install git+{repo}-missing@main" in bad.stderr
     assert not log.exists()
 
@@ -425,3 +430,57 @@ def test_handout_installs_in_a_fresh_venv_with_its_one_line_and_runs_a_lab(tmp_p
     where = subprocess.run([str(venv / "bin" / "python"), "-c", "import balancelab; print(balancelab.__file__)"],
                            env=env, capture_output=True, text=True, cwd=tmp_path, timeout=60).stdout
     assert where.startswith(str(venv)), where
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@NEEDS_CHROMIUM
+def test_binder_opens_a_chapter_as_a_notebook_in_jupyterlab(tmp_path):
+    """After binder/postBuild, JupyterLab (in Debian chromium) opens a chapter's .md, the file a
+    chapter's Binder button names, as a notebook with code cells, not as text."""
+    from playwright.sync_api import sync_playwright
+
+    (tmp_path / "book").mkdir()
+    chapter = "book/ch1_counterweights.md"
+    (tmp_path / chapter).write_text((ROOT / chapter).read_text(encoding="utf-8"), encoding="utf-8")
+    env = {k: v for k, v in os.environ.items() if not k.startswith("JUPYTER")}
+    env.update(HOME=str(tmp_path), JUPYTER_CONFIG_DIR=str(tmp_path / ".jupyter"),
+               JUPYTER_RUNTIME_DIR=str(tmp_path / ".runtime"),
+               PATH=f"{Path(sys.executable).parent}{os.pathsep}{env['PATH']}")
+    post = subprocess.run(["./binder/postBuild"], cwd=ROOT, env=env, capture_output=True, text=True, timeout=120)
+    assert post.returncode == 0, post.stderr
+    port, token = free_port(), secrets.token_hex(16)
+    cmd = [sys.executable, "-m", "jupyter", "lab", "--no-browser", "--ServerApp.ip=127.0.0.1",
+           "--ServerApp.allow_root=True", "--LabApp.extension_manager=readonly", f"--ServerApp.port={port}",
+           "--ServerApp.port_retries=0", f"--IdentityProvider.token={token}", f"--ServerApp.root_dir={tmp_path}",
+           "--LabApp.news_url=", "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
+           f"--LabApp.user_settings_dir={tmp_path / '.settings'}", f"--LabApp.workspaces_dir={tmp_path / '.ws'}"]
+    with open(tmp_path / "server.log", "w") as log:
+        proc = subprocess.Popen(cmd, cwd=tmp_path, env=env, stdout=log, stderr=subprocess.STDOUT)
+        try:
+            url = f"http://127.0.0.1:{port}"
+            for _ in range(240):
+                try:
+                    with urllib.request.urlopen(f"{url}/api/status?token={token}", timeout=2):
+                        break
+                except OSError:
+                    assert proc.poll() is None, (tmp_path / "server.log").read_text()[-2000:]
+                    time.sleep(0.5)
+            else:
+                pytest.fail("JupyterLab did not answer within 120 s: " + (tmp_path / "server.log").read_text()[-2000:])
+            with sync_playwright() as pw:
+                browser = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+                try:
+                    page = browser.new_page(viewport={"width": 1280, "height": 900})
+                    page.goto(f"{url}/lab/tree/{chapter}?token={token}")
+                    page.wait_for_selector(".jp-NotebookPanel .jp-CodeCell", timeout=120_000)
+                    assert page.locator(".jp-NotebookPanel .jp-CodeCell").count() >= 1
+                    assert page.locator(".jp-FileEditor").count() == 0
+                finally:
+                    browser.close()
+        finally:
+            proc.terminate()
+            try:
+                proc.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                proc.kill()
