@@ -30,6 +30,8 @@ import shutil
 import sys
 from pathlib import Path
 
+from .launch import STUDENT_README, add_setup_cell, course_repository
+
 __all__ = ["PLACEHOLDER", "ANSWER_PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
            "stale", "execute_notebook", "stable_widget_id", "handout", "autograder", "main"]
 
@@ -219,13 +221,18 @@ def solution_texts(nb, name: str = "notebook") -> list[str]:
     return [t for t in _split(nb, name)[1] if t.strip()]
 
 
-def student_text(path: str | Path) -> str:
+def student_text(path: str | Path, repository: tuple[str, str] | None = None) -> str:
     """The exact file content of the student version of the solution notebook at ``path``.
+
+    The student version starts with the set-up cell (:func:`~balancelab.course.launch.add_setup_cell`).
 
     Parameters
     ----------
     path : str or Path
         A solution notebook.
+    repository : (str, str), optional
+        Address and branch the set-up cell installs the package from on Colab (default:
+        ``repository.url`` and ``repository.branch`` of ``_config.yml``).
 
     Returns
     -------
@@ -245,8 +252,9 @@ def student_text(path: str | Path) -> str:
     import nbformat
 
     path = Path(path)
-    nb = nbformat.read(path, as_version=4)
-    return nbformat.writes(student_version(nb, path.name)) + "\n"
+    nb = student_version(nbformat.read(path, as_version=4), path.name)
+    add_setup_cell(nb, *(repository or course_repository()))
+    return nbformat.writes(nb) + "\n"
 
 
 def _pairs(src: Path, dst: Path):
@@ -394,16 +402,6 @@ def stable_widget_id(name: str, cell: int, output: int) -> str:
     return hashlib.sha256(f"{name}:{cell}:{output}".encode()).hexdigest()[:32]
 
 
-_STUDENT_README = """# balancelab labs
-
-1. Install the course package and the lab tools (Python >= 3.10):
-   `pip install "./package[labs]"` (from this folder).
-2. Open a lab in JupyterLab: `jupyter lab labs/`.
-3. Every task ends in `check("n.m", answer)`: it says whether the answer is right and gives a
-   hint. `explain("n.m")` says what form an answer takes. Hand in the `.ipynb` file.
-"""
-
-
 def _copy_package(dst: Path) -> None:
     """The library and its build files, without tests, labs, book or caches."""
     ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
@@ -450,7 +448,7 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
         raise FileExistsError(f"{out} exists and is not empty")
     generate(src, out / "labs")
     _copy_package(out / "package")
-    (out / "README.md").write_text(_STUDENT_README, encoding="utf-8")
+    (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
     _scan_handout(out, src)
     return out
 
