@@ -107,7 +107,12 @@ class LinkageKinematics(Kinematics):
 
     # ------------------------------------------------------------------ set-up
     def _assemble(self, guess) -> np.ndarray:
-        """Angles of an assembled configuration, from ``guess`` first, then fixed pseudo-random starts."""
+        """Angles of an assembled configuration at which the linkage has its generic mobility.
+
+        The starts are tried in order: ``guess``, the drawing (every body angle zero: the local
+        frames as the joint points were written), then fixed pseudo-random starts; the first that
+        closes every loop is taken. If the constraint Jacobian loses rank there (a change point,
+        such as a parallelogram drawn flat), the configuration is moved off it (:meth:`_regular`)."""
         n = self.nbodies
         starts = np.random.default_rng(0).uniform(-np.pi, np.pi, (_STARTS, n))
         starts[0] = 0.0
@@ -125,7 +130,28 @@ class LinkageKinematics(Kinematics):
             raise ValueError(
                 f"the linkage does not assemble: from {len(starts)} starting configurations the loop-closure "
                 f"gap stays >= {err.min():.3g} m (check the joint points: a loop must be able to close)")
-        return th[good[0]]
+        return self._regular(th[good[0]])
+
+    def _regular(self, at: np.ndarray) -> np.ndarray:
+        """``at`` if the closure Jacobian has its local generic rank there; otherwise the nearby
+        assembled configuration (about 0.02 rad away) that changes the relative angles at the
+        joints least for its size: at a change point this follows the branch on which the bodies
+        keep their drawn relative angles best (a parallelogram drawn flat stays a parallelogram)."""
+        moving = range(1, self.nbodies)
+        rank0 = self._rank(at, moving)
+        kick = np.random.default_rng(1).normal(0.0, 0.02, (24, self.nbodies))
+        kick[:, 0] = 0.0
+        near, err = newton(self.topology, at + kick, moving, self.tol, iterations=80, damping=1e-9)
+        delta = near - at
+        size = np.linalg.norm(delta, axis=-1)
+        ok = (err <= self.accept) & (size < 0.2) & (size > 1e-6)
+        ranks = np.array([self._rank(y, moving) if o else -1 for y, o in zip(near, ok)])
+        if not ok.any() or ranks.max() <= rank0:
+            return at
+        pick = ok & (ranks == ranks.max())
+        rel = np.stack([delta[:, j.body_i] - delta[:, j.body_j] for j in self.joints], -1)
+        score = np.where(pick, (rel ** 2).sum(-1) / np.maximum(size, 1e-300) ** 2, np.inf)
+        return near[int(np.argmin(score))]
 
     def _rank(self, angles: np.ndarray, columns) -> int:
         if not self.topology.loops:
