@@ -189,7 +189,10 @@ class Linkage:
             Bodies whose absolute angles are the coordinates ``theta_<index>`` (as many as
             the degrees of freedom); by default the earliest bodies that determine the rest.
         guess : mapping of body to angle (rad), optional
-            Body angles to start the assembly from: this picks the circuit (branch).
+            Body angles to start the assembly from: this picks the circuit (branch). Without it
+            the assembly starts from the drawing (every body angle zero); a drawing at a change
+            point (a parallelogram drawn flat) is moved onto the branch on which the most pairs
+            of bodies keep their drawn relative angle (the parallelogram stays one).
         name : str, optional
             Title of the design (default: the linkage's name).
 

@@ -5,7 +5,11 @@ from the global x-axis, as ``theta_1``, ``theta_2`` of the course); the other bo
 angles are solved from the loop-closure equations (:mod:`.topology`). The linkage is
 first *assembled* (damped Newton from a guess, then from fixed pseudo-random starts),
 which picks its circuit; the degrees of freedom are the number of body angles minus the
-numeric rank of the closure Jacobian there (compared with Grübler's count). Then:
+numeric rank of the closure Jacobian there (compared with Grübler's count). A drawing at a
+singular pose (a change point: a parallelogram or an s + l = p + q four-bar drawn flat, where the
+rank drops and two branches cross) is first moved about 0.02 rad off it, onto the branch on which
+the most pairs of bodies keep their drawn relative angle (a parallelogram stays a parallelogram);
+pass ``guess=`` to pick another branch. Then:
 
 * a tree (no loop): every body angle is a coordinate, each turns fully;
 * one degree of freedom: the circuit is followed by continuation from the assembled
@@ -133,25 +137,31 @@ class LinkageKinematics(Kinematics):
         return self._regular(th[good[0]])
 
     def _regular(self, at: np.ndarray) -> np.ndarray:
-        """``at`` if the closure Jacobian has its local generic rank there; otherwise the nearby
-        assembled configuration (about 0.02 rad away) that changes the relative angles at the
-        joints least for its size: at a change point this follows the branch on which the bodies
-        keep their drawn relative angles best (a parallelogram drawn flat stays a parallelogram)."""
+        """``at`` if the closure Jacobian has its local generic rank there; otherwise a nearby
+        assembled configuration (about 0.02 rad away) where the rank is higher. At a change point this
+        picks the branch on which the most pairs of bodies keep their relative angle (a parallelogram
+        drawn flat stays a parallelogram: crank and rocker stay parallel, and so do coupler and ground);
+        among equals, the most mobile branch, then the one whose joints' relative angles change least
+        for the size of the move."""
         moving = range(1, self.nbodies)
         rank0 = self._rank(at, moving)
         kick = np.random.default_rng(1).normal(0.0, 0.02, (24, self.nbodies))
         kick[:, 0] = 0.0
         near, err = newton(self.topology, at + kick, moving, self.tol, iterations=80, damping=1e-9)
         delta = near - at
-        size = np.linalg.norm(delta, axis=-1)
+        size = np.abs(delta).max(axis=-1)
         ok = (err <= self.accept) & (size < 0.2) & (size > 1e-6)
         ranks = np.array([self._rank(y, moving) if o else -1 for y, o in zip(near, ok)])
         if not ok.any() or ranks.max() <= rank0:
             return at
-        pick = ok & (ranks == ranks.max())
+        pick = ok & (ranks > rank0)
+        pairs = np.abs(delta[:, :, None] - delta[:, None, :]) <= 1e-6 * np.maximum(size, 1e-300)[:, None, None]
+        kept = pairs.sum((1, 2))
         rel = np.stack([delta[:, j.body_i] - delta[:, j.body_j] for j in self.joints], -1)
-        score = np.where(pick, (rel ** 2).sum(-1) / np.maximum(size, 1e-300) ** 2, np.inf)
-        return near[int(np.argmin(score))]
+        change = (rel ** 2).sum(-1) / np.maximum(size, 1e-300) ** 2
+        # off the singular point first, then most pairs kept, then the most mobile branch, then least change
+        order = np.lexsort((change, ranks, -kept, ~pick))
+        return near[int(order[0])]
 
     def _rank(self, angles: np.ndarray, columns) -> int:
         if not self.topology.loops:
@@ -226,7 +236,8 @@ class LinkageKinematics(Kinematics):
         while total < 2 * np.pi - 1e-12 and h > 1e-9:
             step = min(h, 2 * np.pi - total)
             q = prev[self.driving[0]] + direction * step
-            sol, ok = self._solve(prev + slope * step, np.array([q]))
+            # the first step follows the tangent (the start may sit next to a change point)
+            sol, ok = self._solve(prev + slope * step, np.array([q]), predict=len(nodes) == 1)
             if ok:
                 slope = (sol - prev) / step
                 nodes.append(sol)
