@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..lustig.solving import InfeasibleDesign
-from .problem import Problem, harmonics
+from .problem import Problem
+from .verdicts import infeasible
 
 __all__ = ["OBJECTIVES", "Solution", "solve", "rank_of", "column_norms"]
 
@@ -29,7 +29,8 @@ class Solution:
     """Values ``x`` of the unknowns, the rank of the conditions and the free choices left."""
 
     def __init__(self, x: np.ndarray, rank: int, nvar: int, residual: float):
-        self.x, self.rank, self.nvar, self.residual = x, rank, nvar, residual
+        self.x, self.rank, self.nvar, self.residual = x, int(rank), int(nvar), residual
+        self.unique: bool | None = None
 
     @property
     def free_choices(self) -> int:
@@ -128,21 +129,33 @@ def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq,
     return res.x if np.all(np.isfinite(res.x)) else y0
 
 
+def _negligible(p: Problem, x: np.ndarray) -> np.ndarray:
+    """Candidates whose value is <= 0, or whose energy is below ``1e-12`` of the design's energy
+    variation (leftover rates of 1e-13 N/m and the like): a mask over the variables."""
+    scale = max(float(np.linalg.norm(p.v)), 1e-300)
+    out = np.zeros(p.nvar, dtype=bool)
+    for b in p.blocks:
+        if x[b.cols[0]] <= 0 or np.linalg.norm(p.A[:, b.cols] @ x[b.cols]) <= 1e-12 * scale:
+            out[b.cols] = True
+    return out
+
+
 def _polish(p: Problem, x: np.ndarray, U: np.ndarray) -> np.ndarray:
     """Least-norm correction of the variables off their bounds, to round-off balance.
 
-    The sampled equations are compressed first to the ``rank`` rows ``U^T A`` (``U`` the
-    left singular vectors of the scaled ``A``): the same least-squares problem, smaller."""
-    at_bound = np.zeros(p.nvar, dtype=bool)
-    for b in p.blocks:
-        if x[b.cols[0]] <= 1e-12 * max(np.abs(x).max(), 1e-300):
-            at_bound[b.cols] = True
-            x[b.cols] = 0.0
-    live = ~at_bound
+    Candidates that come out negligible (:func:`_negligible`) are set to exact zeros first,
+    again after each correction. The sampled equations are compressed to the ``rank`` rows
+    ``U^T A`` (``U`` the left singular vectors of the scaled ``A``): the same least-squares
+    problem, smaller."""
+    x = np.array(x, dtype=float, copy=True)
     C, d = U.T @ p.A, U.T @ p.v
-    for _ in range(3):
+    for _ in range(4):
+        dead = _negligible(p, x)
+        x[dead] = 0.0
+        live = ~dead
         if live.any():
             x[live] -= np.linalg.lstsq(C[:, live], C @ x + d, rcond=1e-13)[0]
+    x[_negligible(p, x)] = 0.0
     return x
 
 
@@ -153,13 +166,15 @@ def solve(p: Problem, objective: str) -> Solution:
     -------
     Solution
         ``x`` (rates, masses and moments in the order of ``p.blocks``' columns), the rank of
-        the conditions and the free choices.
+        the conditions, the free choices, and ``unique``: False when a linear objective leaves
+        other designs of the same objective value (None when not checked).
 
     Raises
     ------
     InfeasibleDesign
         When no solution with non-negative rates and masses (and free points in their
-        boxes) balances the design; the message names the energy terms left over.
+        boxes) balances the design; ``err.verdict`` is one of
+        :data:`~balancelab.methods.general.verdicts.VERDICTS`.
 
     Examples
     --------
@@ -178,47 +193,39 @@ def solve(p: Problem, objective: str) -> Solution:
     start = _cost(p, "min_stiffness") if convex else c  # the linear part alone is unbounded with free points
     lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     if lp.status != 0:
-        raise InfeasibleDesign(_why(p, D, objective, ""))
-    y = lp.x
-    if convex:
-        y = _preload(p, S, c, y, eq, (A_ub, b_ub), bounds)
-    x = _polish(p, S * y, U[:, :r])
-    res = p.A @ x + p.v
-    spread = float(np.ptp(res)) if len(res) else 0.0
-    if spread > 1e-10 * max(p.load_spread, 1e-300):
-        raise InfeasibleDesign(_why(p, D, objective, f"; the best solution leaves {spread:.3g} J"))
-    return Solution(x, r, p.nvar, spread)
+        raise infeasible(p, D, objective)
+    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds), lp.x] if convex else [lp.x]
+    tol = 1e-10 * max(p.load_spread, 1e-300)
+    for y in tries:  # the convex step from the LP's answer, else the LP's (feasible) answer itself
+        x = _polish(p, S * y, U[:, :r])
+        res = p.A @ x + p.v
+        spread = float(np.ptp(res)) if len(res) else 0.0
+        if spread <= tol:
+            break
+    else:
+        raise infeasible(p, D, objective, f"; the best solution leaves {spread:.3g} J")
+    sol = Solution(x, r, p.nvar, spread)
+    if not convex and r < p.nvar:
+        sol.unique = _unique(p, c * S, lp, A_ub, b_ub, eq, bounds)
+    return sol
 
 
-def _label(p: Problem, index: int) -> str:
-    """``springs[i]`` or ``counterweights[j]``: a candidate as the caller wrote it."""
-    kind = p.blocks[index].kind
-    return f"{kind}s[{sum(b.kind == kind for b in p.blocks[:index])}]".replace("masss", "counterweights")
+def _unique(p: Problem, cost: np.ndarray, lp, A_ub, b_ub, eq, bounds) -> bool:
+    """Whether the optimum of a linear objective is one design: the variables of candidates the
+    objective ignores (zero cost) are pushed both ways along a fixed direction on the optimal face."""
+    from scipy.optimize import linprog
 
-
-def _why(p: Problem, D: np.ndarray, objective: str, detail: str) -> str:
-    """The message of an infeasible design: which energy terms cannot be cancelled, and why."""
-    from scipy.optimize import lsq_linear
-
-    lo = np.full(p.nvar, -np.inf)
+    ignored = np.zeros(p.nvar, dtype=bool)
     for b in p.blocks:
-        lo[b.cols[0]] = 0.0
-    free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] * (1 / D)
-    signed = lsq_linear(p.A / D, -p.v, bounds=(lo * D, np.full(p.nvar, np.inf))).x / D
-    unsigned = p.A @ free + p.v
-    head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
-    if np.ptp(unsigned) > 1e-10 * max(p.load_spread, 1e-300):
-        return head + ("even with rates and masses of any sign they cannot make the energy constant; "
-                       f"left over: {_terms(p, unsigned)}")
-    big = max(np.abs(free).max(), 1e-300)
-    need = [_label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
-    cause = (f"balance needs a negative rate or mass for {', '.join(need)}" if need else
-             "balance needs a free point outside its box")
-    return head + f"{cause}; with rates and masses >= 0 these energy terms cannot all vanish: " \
-        f"{_terms(p, p.A @ signed + p.v)}"
-
-
-def _terms(p: Problem, residual: np.ndarray) -> str:
-    """``"0.98 J × cos θ_1, ..."``: the largest terms of an energy residual, as text."""
-    terms = harmonics(p.design, p.poses, residual)
-    return ", ".join(f"{v:.3g} J × {name}" for name, v in terms) or f"{np.ptp(residual):.3g} J"
+        ignored[b.cols] = not cost[b.cols].any()
+    if not ignored.any():
+        return True
+    direction = np.where(ignored, np.random.default_rng(0).uniform(0.5, 1.5, p.nvar), 0.0)
+    slack = 1e-9 * max(abs(lp.fun), 1.0)
+    rows = np.vstack([A_ub, cost]) if A_ub is not None else cost[None]
+    lims = np.append(b_ub, lp.fun + slack) if b_ub is not None else np.array([lp.fun + slack])
+    ends = [linprog(sgn * direction, A_ub=rows, b_ub=lims, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+            for sgn in (1.0, -1.0)]
+    if any(e.status != 0 for e in ends):
+        return True
+    return bool(abs(direction @ (ends[0].x - ends[1].x)) <= 1e-6 * max(np.abs(direction @ lp.x), 1e-3))
