@@ -4,6 +4,7 @@ Layer: methods. See the package docstring for the method and its justification.
 """
 from __future__ import annotations
 
+import contextlib
 import warnings
 from typing import Sequence
 
@@ -21,6 +22,7 @@ __all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
 
 _ROUNDS = 8  # alternations for springs whose two ends are both free
 _STARTS = 6  # starting points tried for them
+_CONTROLLER = None  # threadpoolctl's view of the loaded BLAS libraries, made on first use
 
 
 def _body(design: Design, body, what: str) -> int:
@@ -212,9 +214,14 @@ def _elements(design: Design, blocks, x: np.ndarray):
 def _threads(p_size: int):
     """A context that limits BLAS to one thread for small problems (threads cost more than they
     save there: on a loaded two-core machine the minimum preload ran 100 times slower)."""
-    from threadpoolctl import threadpool_limits
+    global _CONTROLLER
+    if p_size >= 4_000_000:
+        return contextlib.nullcontext()
+    if _CONTROLLER is None:  # finding the BLAS libraries takes tens of ms: once per process
+        from threadpoolctl import ThreadpoolController
 
-    return threadpool_limits(limits=1 if p_size < 4_000_000 else None)
+        _CONTROLLER = ThreadpoolController()
+    return _CONTROLLER.limit(limits=1)
 
 
 def _solve_growing(design, springs, counterweights, box, q, objective):

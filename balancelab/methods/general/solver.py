@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...core.validation import MIN_POSITIVE
 from .problem import Problem
 from .verdicts import infeasible
 
@@ -102,31 +103,44 @@ def _cost(p: Problem, objective: str) -> np.ndarray:
     return c
 
 
-def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds) -> np.ndarray:
-    """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP."""
+def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds, null) -> np.ndarray:
+    """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP on
+    the balanced solutions only (the null space ``null`` of the equalities, of the free choices'
+    dimension, from the linear program's answer ``y0``)."""
     from scipy.optimize import minimize
 
-    free = [b.cols for b in p.blocks if b.kind == "spring" and b.free is not None]
+    free = np.array([b.cols for b in p.blocks if b.kind == "spring" and b.free is not None], dtype=int)
+    k, mx, my = free.T
 
     def f(y):
         x = D * y
-        val = c @ x
+        kk = np.maximum(x[k], 1e-12 * D[k])
+        q = x[mx] ** 2 + x[my] ** 2
+        val = c @ x + float(np.sum(0.5 * q / kk))
         grad = c * D
-        for k, mx, my in free:
-            kk = max(x[k], 1e-12 * D[k])
-            q = x[mx] ** 2 + x[my] ** 2
-            val += 0.5 * q / kk
-            grad[k] += -0.5 * q / kk ** 2 * D[k]
-            grad[mx] += x[mx] / kk * D[mx]
-            grad[my] += x[my] / kk * D[my]
+        grad[k] += -0.5 * q / kk ** 2 * D[k]
+        grad[mx] += x[mx] / kk * D[mx]
+        grad[my] += x[my] / kk * D[my]
         return val, grad
 
-    cons = [{"type": "eq", "fun": lambda y: eq[0] @ y - eq[1], "jac": lambda y: eq[0]}]
-    if ineq[0] is not None:
-        cons.append({"type": "ineq", "fun": lambda y: -(ineq[0] @ y), "jac": lambda y: -ineq[0]})
-    res = minimize(f, y0, jac=True, method="SLSQP", bounds=bounds, constraints=cons,
-                   options={"maxiter": 500, "ftol": 1e-15})
-    return res.x if np.all(np.isfinite(res.x)) else y0
+    # on the solutions of the (orthonormal) equalities only: y = y_p + N z, N spanning their null space
+    y_p = eq[0].T @ eq[1]
+    N = null
+    lower = np.array([0.0 if lo == 0.0 else -np.inf for lo, _ in bounds])
+    sign = np.isfinite(lower)
+    rows = [N[sign]] + ([-(ineq[0] @ N)] if ineq[0] is not None else [])
+    rhs = [-y_p[sign]] + ([ineq[0] @ y_p] if ineq[0] is not None else [])
+    G, h = np.vstack(rows), np.concatenate(rhs)  # G z >= h
+
+    def fz(z):
+        val, grad = f(y_p + N @ z)
+        return val, N.T @ grad
+
+    z0 = N.T @ (y0 - y_p)
+    cons = [{"type": "ineq", "fun": lambda z: G @ z - h, "jac": lambda z: G}]
+    res = minimize(fz, z0, jac=True, method="SLSQP", constraints=cons, options={"maxiter": 500, "ftol": 1e-15})
+    y = y_p + N @ res.x
+    return y if np.all(np.isfinite(y)) else y0
 
 
 def _negligible(p: Problem, x: np.ndarray) -> np.ndarray:
@@ -146,17 +160,45 @@ def _polish(p: Problem, x: np.ndarray, U: np.ndarray) -> np.ndarray:
     Candidates that come out negligible (:func:`_negligible`) are set to exact zeros first,
     again after each correction. The sampled equations are compressed to the ``rank`` rows
     ``U^T A`` (``U`` the left singular vectors of the scaled ``A``): the same least-squares
-    problem, smaller."""
-    x = np.array(x, dtype=float, copy=True)
+    problem, smaller. If correcting the moments ``k p`` freely would carry a free point out of
+    its box (or a rate below the smallest admissible one), the points are kept where the
+    solver put them and only the rates and masses are corrected."""
     C, d = U.T @ p.A, U.T @ p.v
+    free = _correct(p, x, C, d, np.eye(p.nvar))
+    if _admissible(p, free):
+        return free
+    basis = np.zeros((p.nvar, len(p.blocks)))  # each candidate scales as a whole: its point stays
+    for i, b in enumerate(p.blocks):
+        if x[b.cols[0]] > 0:
+            basis[b.cols, i] = x[b.cols] / x[b.cols[0]]
+    return _correct(p, x, C, d, basis)
+
+
+def _correct(p: Problem, x: np.ndarray, C: np.ndarray, d: np.ndarray, basis: np.ndarray) -> np.ndarray:
+    """``x`` corrected along the columns of ``basis`` (those of live candidates) to least squares."""
+    x = np.array(x, dtype=float, copy=True)
     for _ in range(4):
         dead = _negligible(p, x)
         x[dead] = 0.0
-        live = ~dead
-        if live.any():
-            x[live] -= np.linalg.lstsq(C[:, live], C @ x + d, rcond=1e-13)[0]
+        B = basis[:, ~(dead[:, None] & (basis != 0)).any(0)]
+        if B.shape[1]:
+            x -= B @ np.linalg.lstsq(C @ B, C @ x + d, rcond=1e-13)[0]
     x[_negligible(p, x)] = 0.0
     return x
+
+
+def _admissible(p: Problem, x: np.ndarray) -> bool:
+    """Every spring rate 0 or >= MIN_POSITIVE, every free point in its box (to 1e-9 of its size)."""
+    for b in p.blocks:
+        k = x[b.cols[0]]
+        if k < 0 or b.kind == "spring" and 0 < k < MIN_POSITIVE:
+            return False
+        if b.free is not None and k > 0:
+            for axis, (lo, hi) in enumerate(b.box):
+                v, tol = x[b.cols[1 + axis]] / k, 1e-9 * max(hi - lo, abs(lo), abs(hi), 1e-12)
+                if not lo - tol <= v <= hi + tol:
+                    return False
+    return True
 
 
 def solve(p: Problem, objective: str) -> Solution:
@@ -194,7 +236,7 @@ def solve(p: Problem, objective: str) -> Solution:
     lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     if lp.status != 0:
         raise infeasible(p, D, objective)
-    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds), lp.x] if convex else [lp.x]
+    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds, Vt[r:].T), lp.x] if convex else [lp.x]
     tol = 1e-10 * max(p.load_spread, 1e-300)
     for y in tries:  # the convex step from the LP's answer, else the LP's (feasible) answer itself
         x = _polish(p, S * y, U[:, :r])

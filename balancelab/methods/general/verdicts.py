@@ -7,8 +7,13 @@
 * ``"negative"`` — *needs a negative rate or mass*: a solution exists, but only with a negative
   rate or counter mass, named in the message;
 * ``"box"`` — *needs a point outside the box*: a solution with rates and masses ``>= 0`` exists
-  once the free points may leave the box; the message names the points and a box that would do
-  (``err.box``).
+  once the free points may leave the box (up to :data:`WIDER` times wider); the message names the
+  points and a box that would do (``err.box``).
+
+A ZFL spring's free end is found through its moment ``k p``; with ``k -> 0`` and ``|p| -> inf``
+the spring tends to a constant force, which balances anything and is no design. The first
+verdict is proved by a relaxation that allows it (so it is sound); the second is said when no
+solution exists with free points within :data:`WIDER` times the box.
 
 The verdict is stored on the exception (``err.verdict``). Layer: methods.
 """
@@ -83,7 +88,7 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     --------
     Used by :func:`balancelab.balance`; the tests raise each verdict.
     """
-    from scipy.optimize import linprog, lsq_linear
+    from scipy.optimize import lsq_linear
 
     head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
     tol = 1e-10 * max(p.load_spread, 1e-300)
@@ -93,21 +98,15 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
         return _error("impossible", head + "impossible for any rates: even with rates and masses of any sign "
                       f"they cannot make the energy constant; left over: {terms(p, unsigned)}")
     lo = _rates(p)
-    sigma = max(np.linalg.norm(p.v), 1e-300)
-    U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
-    r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
-    cost = np.where(np.isfinite(lo), 1.0, 0.0)
-    bounds = [(0.0, None) if np.isfinite(v) else (None, None) for v in lo]
-    lp = linprog(cost, A_eq=Vt[:r], b_eq=-(U[:, :r].T @ p.v) / s[:r] / sigma, bounds=bounds, method="highs")
-    if lp.status == 0:
-        x = lp.x * sigma / D
-        outside, far = [], 0.0
+    found = _wider(p, D)
+    if found is not None:
+        x, far = found
+        outside = []
         for i, b in enumerate(p.blocks):
             k = x[b.cols[0]]
             if b.free not in (0, 1) or k <= 0:
                 continue
             pt = x[b.cols[1:]] / k
-            far = max(far, float(np.abs(pt).max()))
             (xl, xh), (yl, yh) = b.box
             if not (xl <= pt[0] <= xh and yl <= pt[1] <= yh):
                 end = "counterweight" if b.kind == "mass" else f"end {b.free}"
@@ -119,6 +118,47 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     signed = lsq_linear(p.A / D, -p.v, bounds=(lo, np.full(p.nvar, np.inf))).x / D
     big = max(np.abs(free).max(), 1e-300)
     need = [label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
-    who = ", ".join(need) if need else "some of the candidates (no combination with all of them >= 0)"
-    return _error("negative", head + f"balance needs a negative rate or mass for {who}; with rates and masses "
-                  f">= 0 these energy terms cannot all vanish: {terms(p, p.A @ signed + p.v)}")
+    who = ", ".join(need) if need else "some of the candidates"
+    far = (" (or, for a free point, the limit of a vanishing rate with the point at infinity: a constant force)"
+           if any(b.free in (0, 1) for b in p.blocks) else "")
+    return _error("negative", head + f"balance needs a negative rate or mass for {who}{far}; with rates and "
+                  f"masses >= 0 and free points within {WIDER:g} times the box these energy terms cannot all "
+                  f"vanish: {terms(p, p.A @ signed + p.v)}")
+
+
+#: how much wider than the given box a free point may go before the verdict is "negative"
+WIDER = 1000.0
+
+
+def _wider(p: Problem, D: np.ndarray):
+    """A balanced solution with rates and masses >= 0 and free points in the box made :data:`WIDER`
+    times wider (``(x, farthest coordinate)``), or None."""
+    from scipy.optimize import linprog
+
+    from .solver import _constraints
+
+    boxes = [b.box for b in p.blocks]
+    try:
+        for b in p.blocks:
+            b.box = tuple((WIDER * lo, WIDER * hi) for lo, hi in b.box)
+        sigma = max(np.linalg.norm(p.v), 1e-300)
+        S = sigma / D
+        bounds, A_ub, b_ub = _constraints(p, S)
+    finally:
+        for b, box in zip(p.blocks, boxes):
+            b.box = box
+    U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
+    r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
+    cost = np.array([1.0 if bd == (0.0, None) else 0.0 for bd in bounds])
+    lp = linprog(cost, A_ub=A_ub, b_ub=b_ub, A_eq=Vt[:r], b_eq=-(U[:, :r].T @ p.v) / s[:r] / sigma,
+                 bounds=bounds, method="highs")
+    if lp.status != 0:
+        return None
+    x = lp.x * S
+    reach = [float(np.abs(x[b.cols[1:]] / x[b.cols[0]]).max()) / max(np.abs(b.box).max(), 1e-300)
+             for b in p.blocks if b.free in (0, 1) and x[b.cols[0]] > 0]
+    if max(reach, default=0.0) >= WIDER * (1 - 1e-6):  # at the wider box's edge: heading for infinity
+        return None
+    far = max([float(np.abs(x[b.cols[1:]] / x[b.cols[0]]).max()) for b in p.blocks
+               if b.free in (0, 1) and x[b.cols[0]] > 0] + [0.0])
+    return x, far
