@@ -121,7 +121,7 @@ def _rounds(design, blocks, both, q, objective):
     best = None
     for _ in range(_ROUNDS):
         p = columns(design, blocks, q)
-        sol = solve(p, objective)
+        sol = solve(p, objective, maxiter=60)  # each round is a step of a heuristic: a short convex step
         value = _objective_value(p, sol.x, objective)
         if best is not None and value >= best[0] * (1 - 1e-9):
             break
@@ -218,6 +218,7 @@ def _threads(p_size: int):
     if p_size >= 4_000_000:
         return contextlib.nullcontext()
     if _CONTROLLER is None:  # finding the BLAS libraries takes tens of ms: once per process
+        import scipy.optimize  # noqa: F401  (loads scipy's own BLAS, so that the controller sees it)
         from threadpoolctl import ThreadpoolController
 
         _CONTROLLER = ThreadpoolController()

@@ -103,7 +103,8 @@ def _cost(p: Problem, objective: str) -> np.ndarray:
     return c
 
 
-def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds, null) -> np.ndarray:
+def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds, null,
+             maxiter: int = 500) -> np.ndarray:
     """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP on
     the balanced solutions only (the null space ``null`` of the equalities, of the free choices'
     dimension, from the linear program's answer ``y0``)."""
@@ -138,7 +139,7 @@ def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq,
 
     z0 = N.T @ (y0 - y_p)
     cons = [{"type": "ineq", "fun": lambda z: G @ z - h, "jac": lambda z: G}]
-    res = minimize(fz, z0, jac=True, method="SLSQP", constraints=cons, options={"maxiter": 500, "ftol": 1e-15})
+    res = minimize(fz, z0, jac=True, method="SLSQP", constraints=cons, options={"maxiter": maxiter, "ftol": 1e-15})
     y = y_p + N @ res.x
     return y if np.all(np.isfinite(y)) else y0
 
@@ -201,8 +202,10 @@ def _admissible(p: Problem, x: np.ndarray) -> bool:
     return True
 
 
-def solve(p: Problem, objective: str) -> Solution:
+def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
     """Solve the sampled problem ``p`` for ``objective`` (one of :data:`OBJECTIVES`).
+
+    ``maxiter`` bounds the iterations of the minimum-preload step (SLSQP).
 
     Returns
     -------
@@ -236,7 +239,7 @@ def solve(p: Problem, objective: str) -> Solution:
     lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     if lp.status != 0:
         raise infeasible(p, D, objective)
-    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds, Vt[r:].T), lp.x] if convex else [lp.x]
+    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds, Vt[r:].T, maxiter), lp.x] if convex else [lp.x]
     tol = 1e-10 * max(p.load_spread, 1e-300)
     for y in tries:  # the convex step from the LP's answer, else the LP's (feasible) answer itself
         x = _polish(p, S * y, U[:, :r])

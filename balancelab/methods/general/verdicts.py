@@ -98,7 +98,7 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
         return _error("impossible", head + "impossible for any rates: even with rates and masses of any sign "
                       f"they cannot make the energy constant; left over: {terms(p, unsigned)}")
     lo = _rates(p)
-    found = _wider(p, D)
+    found = _wider(p, D) if any(b.free in (0, 1) for b in p.blocks) else None
     if found is not None:
         x, far = found
         outside = []
@@ -111,7 +111,7 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
             if not (xl <= pt[0] <= xh and yl <= pt[1] <= yh):
                 end = "counterweight" if b.kind == "mass" else f"end {b.free}"
                 outside.append(f"{label(p, i)} {end} at ({pt[0]:.4g}, {pt[1]:.4g}) m")
-        box = nice_box(1.1 * far)
+        box = nice_box(far)
         where = ", ".join(outside) or "the free points at the box's edge"
         return _error("box", head + f"needs a point outside the box {p.blocks[0].box}: {where}; "
                       f"box={box} would do", box)
@@ -121,18 +121,37 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     who = ", ".join(need) if need else "some of the candidates"
     far = (" (or, for a free point, the limit of a vanishing rate with the point at infinity: a constant force)"
            if any(b.free in (0, 1) for b in p.blocks) else "")
+    residual = p.A @ signed + p.v
+    left = (f"these energy terms cannot all vanish: {terms(p, residual)}"
+            if np.ptp(residual) > _TERM_TOL * max(p.load_spread, 1e-300) else
+            "the energy comes out constant only in that limit")
     return _error("negative", head + f"balance needs a negative rate or mass for {who}{far}; with rates and "
-                  f"masses >= 0 and free points within {WIDER:g} times the box these energy terms cannot all "
-                  f"vanish: {terms(p, p.A @ signed + p.v)}")
+                  f"masses >= 0 and free points within {WIDER:g} times the box {left}")
 
 
-#: how much wider than the given box a free point may go before the verdict is "negative"
+#: how much wider than the given box (a square about the origin) a free point may go before the
+#: verdict is "negative"
 WIDER = 1000.0
 
 
 def _wider(p: Problem, D: np.ndarray):
-    """A balanced solution with rates and masses >= 0 and free points in the box made :data:`WIDER`
-    times wider (``(x, farthest coordinate)``), or None."""
+    """A balanced solution with rates and masses >= 0 and free points in the smallest square about
+    the bodies' origins, of half-width 2, 4, ... times the given box's largest bound up to :data:`WIDER`
+    times, that has one: ``(x, half-width)``, or None."""
+    U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
+    r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
+    sigma = max(np.linalg.norm(p.v), 1e-300)
+    base = max([np.abs(b.box).max() for b in p.blocks] + [1e-12])
+    factor = 2.0
+    while factor <= WIDER * 1.0001:
+        x = _in_square(p, D, factor * base, (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma), sigma)
+        if x is not None:
+            return x, factor * base
+        factor *= 2.0 if factor < WIDER / 2 else WIDER / factor if factor < WIDER else 2.0
+    return None
+
+
+def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
     from scipy.optimize import linprog
 
     from .solver import _constraints
@@ -140,25 +159,11 @@ def _wider(p: Problem, D: np.ndarray):
     boxes = [b.box for b in p.blocks]
     try:
         for b in p.blocks:
-            b.box = tuple((WIDER * lo, WIDER * hi) for lo, hi in b.box)
-        sigma = max(np.linalg.norm(p.v), 1e-300)
+            b.box = ((-w, w), (-w, w))
         S = sigma / D
         bounds, A_ub, b_ub = _constraints(p, S)
     finally:
         for b, box in zip(p.blocks, boxes):
             b.box = box
-    U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
-    r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
-    cost = np.array([1.0 if bd == (0.0, None) else 0.0 for bd in bounds])
-    lp = linprog(cost, A_ub=A_ub, b_ub=b_ub, A_eq=Vt[:r], b_eq=-(U[:, :r].T @ p.v) / s[:r] / sigma,
-                 bounds=bounds, method="highs")
-    if lp.status != 0:
-        return None
-    x = lp.x * S
-    reach = [float(np.abs(x[b.cols[1:]] / x[b.cols[0]]).max()) / max(np.abs(b.box).max(), 1e-300)
-             for b in p.blocks if b.free in (0, 1) and x[b.cols[0]] > 0]
-    if max(reach, default=0.0) >= WIDER * (1 - 1e-6):  # at the wider box's edge: heading for infinity
-        return None
-    far = max([float(np.abs(x[b.cols[1:]] / x[b.cols[0]]).max()) for b in p.blocks
-               if b.free in (0, 1) and x[b.cols[0]] > 0] + [0.0])
-    return x, far
+    lp = linprog(np.zeros(p.nvar), A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+    return lp.x * S if lp.status == 0 else None
