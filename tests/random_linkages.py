@@ -87,3 +87,21 @@ def ground_springs(design, rng, free="moving"):
             g, m = ("ground", None), (b, None)
         out.append((g, m))
     return out
+
+
+def slider_crank(rng):
+    crank = rng.uniform(0.1, 0.3)
+    rod = rng.uniform(0.4, 0.8)
+    lk = bl.Linkage("slider-crank")
+    lk.revolute("ground", (0.0, 0.0), "crank", (0.0, 0.0))
+    lk.revolute("crank", (crank, 0.0), "rod", (0.0, 0.0))
+    lk.revolute("rod", (rod, 0.0), "slider", (0.0, 0.0))
+    angle = rng.uniform(-0.5, 0.5)
+    lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(np.cos(angle), np.sin(angle)))
+    for body, length in (("crank", crank), ("rod", rod)):
+        lk.mass(body, rng.uniform(0.5, 3.0), at=(rng.uniform(0, length), rng.uniform(-0.05, 0.05)))
+    lk.mass("slider", rng.uniform(0.5, 3.0))
+    return lk.build(guess={"crank": 1.0})
+
+
+KINDS["slider-crank"] = slider_crank
