@@ -154,6 +154,7 @@ RIGHT = {
     "7.1": _lab7_free_choices,
     "7.2": _lab7_least_stiffness,
     "7.3": _lab7_lamp_springs,
+    "7.4": lambda: (1.2 * 0.125 + 0.8 * (1 - 0.3 / 0.7) * 0.25) / 0.5,  # crank's moment, counterweight 0.5 m behind
     "8.1": lab8_reference_springs,
     "8.2": _lab8_study,
     "8.3": _lab8_shoulder_torque,

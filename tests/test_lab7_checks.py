@@ -12,9 +12,9 @@ from balancelab.methods.general.examples import all_pairs, arm_3r, parallelogram
 
 def test_every_task_is_registered_with_points_an_answer_form_and_a_variable():
     lab = tasks("lab7")
-    assert [t.id for t in lab] == ["7.1", "7.2", "7.3"]
-    assert sum(t.points for t in lab) == 5.0
-    assert [t.kind for t in lab] == ["numeric", "numeric", "design"]
+    assert [t.id for t in lab] == ["7.1", "7.2", "7.3", "7.4"]
+    assert sum(t.points for t in lab) == 6.0
+    assert [t.kind for t in lab] == ["numeric", "numeric", "design", "numeric"]
     for t in lab:
         verdict = check(t.id, None)  # a malformed answer is a verdict, not an exception
         assert verdict.task == t.id and not verdict.correct and verdict.score == 0.0 and verdict.hint
@@ -92,3 +92,19 @@ def test_the_open_task_refuses_what_breaks_a_constraint_or_the_balance():
     assert not check("7.3", "two springs").correct
     assert not check("7.3", []).correct
     assert np.isfinite(tasks("lab7")[2].points)
+
+
+def test_the_slider_task_is_judged_by_the_mechanism_and_not_by_the_chapters_numbers():
+    """7.4: the slider carries no moment (a level guide), the crank carries its own weight and the rod's
+    share at its tip; the least counterweight sits at the box's edge, 0.5 m behind the pivot."""
+    from balancelab.course.check.lab7 import LAB7_SLIDER, lab7_slider_crank
+
+    v = LAB7_SLIDER
+    moment = v["crank_mass"] * v["crank"] / 2 + v["rod_mass"] * (1 - v["rod_com"] / v["rod"]) * v["crank"]
+    right = moment / v["box"][0][1]
+    assert check("7.4", right).correct and check("7.4", f"{right * 1000:.3f} g").correct
+    assert not check("7.4", moment / 0.6).correct  # the chapter's box, not the lab's
+    assert not check("7.4", right * 9.81).correct
+    d = lab7_slider_crank()
+    out = bl.balance(d, counterweights=[("crank", (-v["box"][0][1], 0.0))])
+    assert abs(out.parameters["counter_mass1"] - right) < 1e-9 * right and out.balance_report().balanced

@@ -142,9 +142,9 @@ def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "wei
     >>> gravity_load(1, (0.3, 0.0), 2.0).force
     (0.0, -19.62)
     """
-    mass = finite_real("mass", mass, nonnegative=True)   # a computed mass may be tiny, not zero
-    if mass == 0:
-        raise ValueError("mass must be > 0, got 0.0")
+    mass = finite_real("mass (kg)", mass)   # a computed mass may be tiny, not zero or negative
+    if mass <= 0:
+        raise ValueError(f"mass must be > 0 (kg), got {mass}")
     return Load(body, point, (0.0, -mass * G), name=name, kind=kind)
 
 

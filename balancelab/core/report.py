@@ -11,7 +11,8 @@ The verdict cannot be fooled by the three tricks that fooled it in 0.1:
 * a tolerance that is not a number between 0 and 1 is refused (:func:`check_tolerance`);
 * springs that cancel each other (two stiff springs whose energies sum to a constant) no longer
   make an unbalanced design look balanced: the energy is compared with the energy the *loads*
-  exchange, which springs cannot change (:func:`load_scale`).
+  exchange, which springs cannot change (:func:`load_scale`); loads that cancel each other
+  (equal and opposite forces on a translating coupler) are summed first, so they cannot either.
 """
 from __future__ import annotations
 
@@ -186,8 +187,9 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
-    e.g. a force and its opposite) are added up first; the scale is the sum of the spreads
-    ``max - min`` of these groups' energies. Springs do not enter it, so springs that
+    e.g. a force and its opposite) are added up first, then groups whose energies cancel
+    (equal and opposite forces at two points of a translating body, say); the scale is the
+    sum of the spreads ``max - min`` of these groups' energies. Springs do not enter it, so springs that
     cancel each other cannot inflate it. A design whose loads exchange no energy (a
     spring-loaded mechanism, or loads that only stand still; below ``1e-12 * scale``)
     has its springs as the load: the scale is then ``scale``, the sum of the spreads of
@@ -228,9 +230,31 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
                 if group[j] == j and np.max(np.abs(pts[:, i] - pts[:, j])) <= 1e-9 * size:
                     group[i] = j
                     break
-        for g in set(group):
-            total += float(np.ptp(load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1)))
+        sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
+        total = sum(float(np.ptp(e)) for e in _cancel(sums))
     return total if total > _ROUND_OFF * scale else scale
+
+
+def _cancel(energies: list) -> list:
+    """Merge groups of loads whose energies cancel (the sum of two varies by at most ``1e-9`` of their
+    own spreads: equal and opposite forces on a translating body, or on two bodies that turn alike),
+    so that loads that cancel each other cannot inflate the yardstick (what is left of a cancelling pair
+    is round-off and counts zero); repeated until none merge."""
+    groups = [np.asarray(e, dtype=float) for e in energies]
+    merged = True
+    while merged and len(groups) > 1:
+        merged = False
+        for i in range(len(groups)):
+            for j in range(i):
+                both = groups[i] + groups[j]
+                if np.ptp(both) <= 1e-9 * (np.ptp(groups[i]) + np.ptp(groups[j])) and np.ptp(groups[i]) > 0:
+                    groups[j] = np.zeros_like(both)  # what is left of them is round-off
+                    del groups[i]
+                    merged = True
+                    break
+            if merged:
+                break
+    return groups
 
 
 def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,

@@ -3,7 +3,8 @@
 One degree of freedom: the load, spring and total potential energy against the
 coordinate, the total flat for a balanced design. Two degrees of freedom: a map of the
 total energy's deviation from its mean, in units of the design's energy scale, and of
-the residual generalized force. Every number plotted is the design's own
+the residual generalized force. More: the three curves along a closed path through the
+configuration space that sweeps every coordinate over its range (:func:`sweep_path`). Every number plotted is the design's own
 (:meth:`balancelab.Design.potential_energy`, :meth:`~balancelab.Design.generalized_force`,
 :meth:`~balancelab.Design.balance_report`). Layer: viz.
 """
@@ -18,7 +19,28 @@ from ..core.validation import finite_real
 from .style import FONT
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
 
-__all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary"]
+__all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary", "sweep_path"]
+
+
+def sweep_path(design: Design, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """A closed path of ``n`` configurations through a design's range, and its parameter in [0, 1].
+
+    Coordinate ``i`` runs ``centre_i + half_i sin(2 pi (i + 1) t + i)`` (a Lissajous figure with
+    frequencies 1, 2, 3, ...), so that every coordinate sweeps 96 % of its range and every pair of
+    coordinates varies together.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> q, t = sweep_path(bl.catalog()["general_3r_arm"](), 5)
+    >>> q.shape, t.tolist()
+    ((5, 3), [0.0, 0.25, 0.5, 0.75, 1.0])
+    """
+    t = np.linspace(0.0, 1.0, n)
+    lo, hi = design.q_range[:, 0], design.q_range[:, 1]
+    i = np.arange(design.dof)
+    q = (lo + hi) / 2 + 0.48 * (hi - lo) * np.sin(2 * np.pi * (i + 1) * t[:, None] + i)
+    return q, t
 
 
 def report_summary(report) -> str:
@@ -122,10 +144,9 @@ class EnergyView:
     def __init__(self, design: Design, ax=None, *, n: int | None = None, report=None,
                  q=None, residual_ax=None, legend: bool = True, title: bool = True):
         check_design(design)
-        if design.dof > 2:
-            raise ValueError(f"energy_plot draws 1 or 2 degrees of freedom; {design.name} has {design.dof}")
+        self.path = design.dof > 2  # curves along sweep_path instead of a map
         self.ax = new_axes(ax, figsize=(5.0, 3.4))
-        self.n = count("n", n) if n is not None else (241 if design.dof == 1 else 61)
+        self.n = count("n", n) if n is not None else (61 if design.dof == 2 else 241)
         self.residual_ax = residual_ax
         self.show_title = title
         #: fixed energy-axis limits (J) for one dof; ``None`` to fit each design
@@ -133,7 +154,7 @@ class EnergyView:
         self.lines: dict = {}
         self.image = None
         self.residual_image = None
-        if design.dof == 1:
+        if design.dof != 2:
             self._init_curves(design, legend)
         else:
             self._init_map(design, residual_ax)
@@ -156,7 +177,8 @@ class EnergyView:
                               markersize=9, markeredgewidth=2)
         self.marker, = ax.plot([], [], linestyle="none", marker="o", color="black",
                                markerfacecolor=PALETTE["yellow"], markersize=8, zorder=5)
-        ax.set_xlabel(angle_label(design, 0))
+        ax.set_xlabel(f"position along a closed path that sweeps all {design.dof} coordinates (%)" if self.path
+                      else angle_label(design, 0))
         ax.set_ylabel("potential energy (J)")
         if legend:
             ax.legend(loc="best", fontsize=FONT["legend"], framealpha=0.85)
@@ -211,7 +233,10 @@ class EnergyView:
     def _compute(self) -> None:
         """The design's energies over the range grid, then the curves or maps and the verdict."""
         d = self.design
-        grid = range_grid(d, self.n if d.dof == 1 else self.n * self.n)
+        if self.path:
+            grid, self.t = sweep_path(d, self.n)
+        else:
+            grid = range_grid(d, self.n if d.dof == 1 else self.n * self.n)
         ok = d.reachable(grid)
         total = np.full(len(grid), np.nan)
         load = np.full(len(grid), np.nan)
@@ -220,7 +245,7 @@ class EnergyView:
             e = d.potential_energy(grid[ok])
             total[ok], load[ok], spring[ok] = e.total, e.load, e.spring
         self.grid, self.total, self.load, self.spring = grid, total, load, spring
-        if d.dof == 1:
+        if d.dof != 2:
             self._show_curves()
         else:
             self._show_maps(ok)
@@ -228,7 +253,7 @@ class EnergyView:
 
     def _show_curves(self) -> None:
         rep = self.report
-        x = np.degrees(self.grid[:, 0])
+        x = 100 * self.t if self.path else np.degrees(self.grid[:, 0])
         self.lines["load"].set_data(x, self.load)
         self.lines["spring"].set_data(x, self.spring)
         self.lines["total"].set_data(x, self.total)
@@ -270,7 +295,9 @@ class EnergyView:
             wq = np.atleast_1d(rep.worst_q)
             self.note.set_text(f"not balanced: total varies by {rep.variation:.2g} of the scale\n"
                                f"largest |dV/dq| = {rep.residual * rep.scale:.3g} J/rad (×)")
-            if d.dof == 1:
+            if self.path:  # the worst configuration need not lie on the path: it is written, not marked
+                self.worst.set_data([], [])
+            elif d.dof == 1:
                 self.worst.set_data([np.degrees(wq[0])], [float(d.potential_energy(wq).total)])
             else:
                 self.worst.set_data([np.degrees(wq[0])], [np.degrees(wq[1])])
@@ -292,7 +319,10 @@ class EnergyView:
     def set_q(self, q) -> None:
         """Move the marker to configuration ``q`` (rad)."""
         q = np.asarray(q, dtype=float).reshape(-1)
-        if self.design.dof == 1:
+        if self.path:  # the nearest point of the path
+            k = int(np.argmin(np.sum((self.grid - q) ** 2, axis=-1)))
+            self.marker.set_data([100 * self.t[k]], [float(self.total[k])])
+        elif self.design.dof == 1:
             v = float(self.design.potential_energy(q).total)
             self.marker.set_data([np.degrees(q[0])], [v])
         else:
@@ -309,12 +339,14 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     Two degrees of freedom: a map of the total energy's deviation from its mean in
     units of the design's energy scale (the sum of the spreads of every load and
     spring energy), so a balanced design is one flat colour, and optionally a map of
-    the residual generalized force. The balance verdict is in the title.
+    the residual generalized force. Three or more: the three curves along a closed path
+    that sweeps every coordinate over its range (:func:`sweep_path`), with the design's
+    variation written. The balance verdict is in the title.
 
     Parameters
     ----------
     design : Design
-        A design with 1 or 2 coordinates.
+        Any design.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on (a new figure by default).
     q : array_like, optional

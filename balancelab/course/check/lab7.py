@@ -10,7 +10,10 @@ it needs from the answer (plain numbers, strings and tuples) and the library:
 * 7.3 (open design): springs for the parallelogram desk lamp that fit the constraints of
   :data:`LAB7_LAMP` (at most three ZFL springs from the base, anchors in a box, rates
   limited), given as numbers; the judge rebuilds the lamp with them and runs its balance
-  report.
+  report;
+* 7.4 (sliders): the least counter mass that balances lab 7's slider-crank
+  (:func:`lab7_slider_crank`, :data:`LAB7_SLIDER`) with one counterweight on the crank inside
+  the lab's box.
 """
 from __future__ import annotations
 
@@ -19,14 +22,20 @@ import functools
 from ...core.design import Design
 from ...core.elements import Spring
 from ...methods.general import balance, free_choices
+from ...mechanisms.linkage import Linkage
 from ...methods.general.examples import all_pairs, arm_3r, parallelogram_lamp
 from .answers import design_balanced, numeric, point, quantity
 from .core import AnswerError, register_task
 
-__all__ = ["LAB7_ARM", "LAB7_LAMP", "lab7_arm", "lab7_candidates", "lamp_with_springs"]
+__all__ = ["LAB7_ARM", "LAB7_LAMP", "LAB7_SLIDER", "lab7_arm", "lab7_candidates", "lab7_slider_crank",
+           "lamp_with_springs"]
 
 #: Lab 7's 3R arm (m, kg): other numbers than chapter 7's, so the chapter does not print the answers.
 LAB7_ARM = dict(lengths=(0.45, 0.35, 0.25), masses=(1.8, 1.2, 0.8), lamp=0.4)
+
+#: Lab 7's slider-crank (m, kg; the rod's mass at ``rod_com`` along it) and the box of its counterweight (m).
+LAB7_SLIDER = dict(crank=0.25, rod=0.7, crank_mass=1.2, rod_mass=0.8, rod_com=0.3, slider_mass=1.5,
+                   box=((-0.5, 0.5), (-0.5, 0.5)))
 
 #: The open design task's constraints: anchors (on the ground) in ``box`` (m), rates up to ``k_max`` (N/m).
 LAB7_LAMP = dict(box=((-0.15, 0.15), (0.0, 0.3)), k_max=300.0, max_springs=3)
@@ -87,6 +96,44 @@ def _t71(answer):
                "numeric", "a number in N/m (or with a unit); accepted within 0.5 %")
 def _t72(answer):
     return numeric(answer, _arm_numbers()[1], "stiffness")
+
+
+def lab7_slider_crank() -> Design:
+    """Lab 7's slider-crank (:data:`LAB7_SLIDER`): crank, rod and a slider on a level guide through
+    the crank's pivot (a prismatic joint); the crank's mass at its middle.
+
+    Returns
+    -------
+    Design
+
+    Examples
+    --------
+    >>> d = lab7_slider_crank()
+    >>> d.bodies, d.q_names
+    (('ground', 'crank', 'rod', 'slider'), ('theta_1',))
+    """
+    v = LAB7_SLIDER
+    lk = Linkage("lab 7 slider-crank")
+    lk.revolute("ground", (0.0, 0.0), "crank", (0.0, 0.0))
+    lk.revolute("crank", (v["crank"], 0.0), "rod", (0.0, 0.0))
+    lk.revolute("rod", (v["rod"], 0.0), "slider", (0.0, 0.0))
+    lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(1.0, 0.0))
+    lk.mass("crank", v["crank_mass"], at=(v["crank"] / 2, 0.0))
+    lk.mass("rod", v["rod_mass"], at=(v["rod_com"], 0.0))
+    lk.mass("slider", v["slider_mass"])
+    return lk.build(guess={"crank": 1.0})
+
+
+@functools.lru_cache(maxsize=None)
+def _slider_mass() -> float:
+    d = balance(lab7_slider_crank(), counterweights=[("crank", None)], objective="min_mass", box=LAB7_SLIDER["box"])
+    return float(d.parameters["counter_mass1"])
+
+
+@register_task("7.4", "least counter mass on the crank that balances lab 7's slider-crank", "counter_mass_min",
+               "numeric", "a mass in kg (or with a unit); accepted within 0.5 %")
+def _t74(answer):
+    return numeric(answer, _slider_mass(), "mass")
 
 
 def lamp_with_springs(springs) -> Design:

@@ -1,8 +1,9 @@
 """`Linkage`: build a design of your own, body by body, joint by joint.
 
 Bodies are named (strings; an integer is the index of an existing body, 0 the ground
-``"ground"``) and created when first named. Joints are revolute only (a prismatic joint
-is not supported). Masses, constant forces and springs (any free length) sit at local
+``"ground"``) and created when first named. Joints are revolute (:meth:`Linkage.revolute`) or
+prismatic (:meth:`Linkage.prismatic`, a slider whose slide ``s_<k>`` in metres becomes a
+coordinate wherever the kinematics chooses it). Masses, constant forces and springs (any free length) sit at local
 points of bodies: each body's local frame is the one its joint points are written in.
 :meth:`Linkage.build` checks the topology and returns a :class:`balancelab.Design` on
 :class:`.kinematics.LinkageKinematics`. Layer: mechanisms.
@@ -11,10 +12,13 @@ from __future__ import annotations
 
 from typing import Mapping, Sequence
 
+import numpy as np
+
 from ...core.design import Design
 from ...core.elements import Joint, Load, Spring, gravity_load
 from ...core.validation import finite_real, planar_point
 from .kinematics import LinkageKinematics
+from .topology import Slider
 
 __all__ = ["Linkage", "BodyRef"]
 
@@ -50,6 +54,8 @@ class Linkage:
         self.name = str(name)
         self._bodies: list[str] = ["ground"]
         self._joints: list[Joint] = []
+        self._sliders: list[Slider] = []
+        self._strokes: list = []
         self._loads: list[Load] = []
         self._springs: list[Spring] = []
         self._labels: dict = {}
@@ -112,6 +118,58 @@ class Linkage:
                              f"{joint.point_j} are joined already")
         self._joints.append(joint)
 
+    def prismatic(self, body_a: BodyRef, point_a, body_b: BodyRef, point_b, axis=(1.0, 0.0),
+                  stroke=None) -> str:
+        """A slider: ``point_b`` of ``body_b`` moves along the line through ``point_a`` of ``body_a``
+        with direction ``axis`` (in ``body_a``'s frame), and the two bodies keep their relative angle.
+
+        Parameters
+        ----------
+        body_a, body_b : str or int
+            The body that carries the line (the guide) and the body that slides on it.
+        point_a, point_b : (float, float)
+            Local points (m); the slide ``s`` is the distance of ``point_b`` from ``point_a`` along ``axis``.
+        axis : (float, float)
+            Direction of the line in ``body_a``'s frame (any length but zero; it is normalized).
+        stroke : (float, float), optional
+            Range of the slide (m) when it is a coordinate; default ``(-2 L, 2 L)`` with ``L`` the
+            linkage's largest joint coordinate. A closed loop may limit it further.
+
+        Returns
+        -------
+        str
+            The slide's coordinate name ``s_<k>`` (k = 1, 2, ... in the order of the sliders), also
+            accepted by ``build(driving=...)``.
+
+        Examples
+        --------
+        A block on a horizontal guide, pulled back to the middle by a spring:
+
+        >>> lk = Linkage("block")
+        >>> lk.prismatic("ground", (0.0, 0.0), "block", (0.0, 0.0), axis=(1.0, 0.0), stroke=(-0.5, 0.5))
+        's_1'
+        >>> lk.spring("block", (0.0, 0.0), "ground", (0.0, 0.0), k=100.0)
+        >>> d = lk.build()
+        >>> d.q_names, d.q_range.tolist()
+        (('s_1',), [[-0.5, 0.5]])
+        """
+        a, b = self._index(body_a, "body_a"), self._index(body_b, "body_b")
+        if a == b:
+            raise ValueError(f"a joint must join two different bodies; both sides are {self._bodies[a]!r}")
+        ux, uy = planar_point("axis", axis)
+        norm = float(np.hypot(ux, uy))
+        if not norm > 1e-12:
+            raise ValueError(f"axis must be a nonzero direction (u_x, u_y), got {axis!r}")
+        if stroke is not None:
+            lo, hi = planar_point("stroke (m)", stroke)
+            if not lo < hi:
+                raise ValueError(f"stroke must be (lo, hi) in metres with lo < hi, got {stroke!r}")
+            stroke = (lo, hi)
+        self._sliders.append(Slider(a, planar_point("point_a (m)", point_a), b, planar_point("point_b (m)", point_b),
+                                    (ux / norm, uy / norm)))
+        self._strokes.append(stroke)
+        return f"s_{len(self._sliders)}"
+
     def mass(self, body: BodyRef, mass: float, at=(0.0, 0.0), name: str = "") -> None:
         """Hang a mass ``mass`` (kg) at the local point ``at`` (m) of ``body`` (its weight, g along -y).
 
@@ -171,13 +229,26 @@ class Linkage:
             raise ValueError(f"duplicate label {name!r}")
         self._labels[str(name)] = (self._index(body, "body"), planar_point("point (m)", point))
 
+    def _variable(self, ref, what: str) -> int:
+        """A body's angle (its index) or a slide ``"s_<k>"`` (``nbodies + k - 1``)."""
+        if isinstance(ref, str) and ref.startswith("s_") and ref[2:].isdigit() and ref not in self._bodies:
+            k = int(ref[2:])
+            if not 1 <= k <= len(self._sliders):
+                raise ValueError(f"{what}: there is no slide {ref!r} (slides s_1..s_{len(self._sliders)})")
+            return len(self._bodies) + k - 1
+        if isinstance(ref, str) and ref not in self._bodies:
+            raise ValueError(f"{what} must name a body {self._bodies} or a slide s_<k>, got {ref!r}")
+        return self._index(ref, what)
+
     def _check(self) -> None:
         if len(self._bodies) < 2:
             raise ValueError("the linkage has no moving body: join one to the ground with revolute()")
         jointed = {b for j in self._joints for b in (j.body_i, j.body_j)}
+        jointed |= {b for sl in self._sliders for b in (sl.body_a, sl.body_b)}
         lonely = [n for i, n in enumerate(self._bodies) if i and i not in jointed]
         if lonely:
-            raise ValueError(f"bodies {lonely} have no joint: join each body to the linkage with revolute()")
+            raise ValueError(f"bodies {lonely} have no joint: join each body to the linkage with revolute() "
+                             "or prismatic()")
 
     def build(self, driving: Sequence[BodyRef] | None = None, guess: Mapping[BodyRef, float] | None = None,
               name: str | None = None) -> Design:
@@ -185,11 +256,15 @@ class Linkage:
 
         Parameters
         ----------
-        driving : sequence of body names or indices, optional
-            Bodies whose absolute angles are the coordinates ``theta_<index>`` (as many as
-            the degrees of freedom); by default the earliest bodies that determine the rest.
+        driving : sequence of body names or indices, or slide names, optional
+            Bodies whose absolute angles are the coordinates ``theta_<index>``, or slides
+            ``"s_<k>"`` (as returned by :meth:`prismatic`), as many as the degrees of freedom;
+            by default the earliest bodies (then slides) that determine the rest.
         guess : mapping of body to angle (rad), optional
-            Body angles to start the assembly from: this picks the circuit (branch).
+            Body angles to start the assembly from: this picks the circuit (branch). Without it
+            the assembly starts from the drawing (every body angle zero); a drawing at a change
+            point (a parallelogram drawn flat) is moved onto the branch on which the most pairs
+            of bodies keep their drawn relative angle (the parallelogram stays one).
         name : str, optional
             Title of the design (default: the linkage's name).
 
@@ -204,9 +279,10 @@ class Linkage:
             linkage that does not assemble, or driving bodies that do not determine the rest.
         """
         self._check()
-        drive = None if driving is None else [self._index(b, "driving") for b in driving]
-        start = None if guess is None else {self._index(b, "guess"): finite_real(f"guess[{b!r}] (rad)", a)
+        drive = None if driving is None else [self._variable(b, "driving") for b in driving]
+        start = None if guess is None else {self._variable(b, "guess"): finite_real(f"guess[{b!r}] (rad or m)", a)
                                             for b, a in dict(guess).items()}
-        kin = LinkageKinematics(len(self._bodies), self._joints, drive, start, self._bodies)
+        kin = LinkageKinematics(len(self._bodies), self._joints, drive, start, self._bodies, self._sliders,
+                                self._strokes)
         return Design(self.name if name is None else name, self._bodies, self._joints, kin, self._loads,
                       self._springs, labels=self._labels, reference="balancelab.Linkage (numeric kinematics)")

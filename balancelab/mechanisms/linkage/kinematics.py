@@ -5,7 +5,11 @@ from the global x-axis, as ``theta_1``, ``theta_2`` of the course); the other bo
 angles are solved from the loop-closure equations (:mod:`.topology`). The linkage is
 first *assembled* (damped Newton from a guess, then from fixed pseudo-random starts),
 which picks its circuit; the degrees of freedom are the number of body angles minus the
-numeric rank of the closure Jacobian there (compared with Grübler's count). Then:
+numeric rank of the closure Jacobian there (compared with Grübler's count). A drawing at a
+singular pose (a change point: a parallelogram or an s + l = p + q four-bar drawn flat, where the
+rank drops and two branches cross) is first moved about 0.02 rad off it, onto the branch on which
+the most pairs of bodies keep their drawn relative angle (a parallelogram stays a parallelogram);
+pass ``guess=`` to pick another branch. Then:
 
 * a tree (no loop): every body angle is a coordinate, each turns fully;
 * one degree of freedom: the circuit is followed by continuation from the assembled
@@ -31,7 +35,7 @@ import numpy as np
 from ...core.elements import Joint
 from ...core.kinematics import Kinematics
 from ..geometry import rotate
-from .topology import Topology, newton
+from .topology import Slider, Topology, newton
 
 __all__ = ["LinkageKinematics", "STEP"]
 
@@ -78,38 +82,66 @@ class LinkageKinematics(Kinematics):
     """
 
     def __init__(self, nbodies: int, joints: Sequence[Joint], driving: Sequence[int] | None = None,
-                 guess: Mapping[int, float] | None = None, names: Sequence[str] | None = None):
+                 guess: Mapping[int, float] | None = None, names: Sequence[str] | None = None,
+                 sliders: Sequence[Slider] = (), strokes: Sequence | None = None):
         self.nbodies = int(nbodies)
         self.joints = tuple(Joint(*j) for j in joints)
+        self.sliders = tuple(p if isinstance(p, Slider) else Slider(*p) for p in sliders)
         self.body_names = tuple(names) if names is not None else tuple(f"body {i}" for i in range(nbodies))
-        self.topology = Topology(self.nbodies, self.joints)
         pts = [abs(v) for j in self.joints for p in (j.point_i, j.point_j) for v in p]
+        pts += [abs(v) for sl in self.sliders for p in (sl.point_a, sl.point_b) for v in p]
         self.size = max(max(pts, default=0.0), 1e-9)
+        self.topology = Topology(self.nbodies, self.joints, self.sliders, self.size)
+        self.nvar = self.topology.nvar
+        self.strokes = np.array([(-2 * self.size, 2 * self.size) if st is None else st
+                                 for st in (strokes or [None] * len(self.sliders))], dtype=float).reshape(-1, 2)
+        self.scale = np.where(np.arange(self.nvar) >= self.nbodies, self.size, 1.0)  # rad, or m for a slide
         self.tol = 1e-13 * self.size
         self.accept = 1e-10 * self.size
+        self.solved = self.topology.nequations > 0  # else every body angle is a coordinate
         self.assembled = self._assemble(guess)
-        self.grubler = 3 * (self.nbodies - 1) - 2 * len(self.joints)
+        self.grubler = 3 * (self.nbodies - 1) - 2 * (len(self.joints) + len(self.sliders))
         self._mobility()
         self.driving = self._driving(driving)
-        self.dependent = [b for b in range(1, self.nbodies) if b not in self.driving]
-        self.names = tuple(f"theta_{b}" for b in self.driving)
-        self.descriptions = tuple(f"angle of {self.body_names[b]} from the x-axis" for b in self.driving)
-        self.independent_symbols = True if not self.topology.loops else None
+        self.dependent = [b for b in range(1, self.nvar) if b not in self.driving]
+        self.names = tuple(self.variable_name(b) for b in self.driving)
+        self.descriptions = tuple(self._describe(b) for b in self.driving)
+        self.independent_symbols = True if not self.solved else None
         self.full_turn = False
         self._table = self._grid = None
         if not self.topology.loops:
-            self.full_turn = True
-            self.q_range = np.array([[-np.pi, np.pi]] * self.dof)
+            self.full_turn = not any(b >= self.nbodies for b in self.driving)
+            self.q_range = np.array([self._span(b) for b in self.driving]).reshape(-1, 2)
         elif self.dof == 1:
             self._follow_circuit()
         else:
             self._fill_grid()
 
+    # ------------------------------------------------------------------ variables
+    def variable_name(self, v: int) -> str:
+        """``theta_<body>`` for a body angle, ``s_<k>`` (k from 1) for the slide of the k-th prismatic joint."""
+        return f"theta_{v}" if v < self.nbodies else f"s_{v - self.nbodies + 1}"
+
+    def _describe(self, v: int) -> str:
+        if v < self.nbodies:
+            return f"angle of {self.body_names[v]} from the x-axis"
+        sl = self.sliders[v - self.nbodies]
+        return f"slide of {self.body_names[sl.body_b]} along {self.body_names[sl.body_a]} (m)"
+
+    def _span(self, v: int) -> tuple[float, float]:
+        """Range of a free variable of a tree: a turn (rad), or the slide's stroke (m)."""
+        return (-np.pi, np.pi) if v < self.nbodies else tuple(self.strokes[v - self.nbodies])
+
     # ------------------------------------------------------------------ set-up
     def _assemble(self, guess) -> np.ndarray:
-        """Angles of an assembled configuration, from ``guess`` first, then fixed pseudo-random starts."""
-        n = self.nbodies
-        starts = np.random.default_rng(0).uniform(-np.pi, np.pi, (_STARTS, n))
+        """Angles of an assembled configuration at which the linkage has its generic mobility.
+
+        The starts are tried in order: ``guess``, the drawing (every body angle zero: the local
+        frames as the joint points were written), then fixed pseudo-random starts; the first that
+        closes every loop is taken. If the constraint Jacobian loses rank there (a change point,
+        such as a parallelogram drawn flat), the configuration is moved off it (:meth:`_regular`)."""
+        n = self.nvar
+        starts = np.random.default_rng(0).uniform(-np.pi, np.pi, (_STARTS, n)) * self.scale
         starts[0] = 0.0
         if guess:
             first = np.zeros(n)
@@ -117,7 +149,7 @@ class LinkageKinematics(Kinematics):
                 first[int(b)] = float(a)
             starts = np.vstack([first, starts])
         starts[:, 0] = 0.0
-        if not self.topology.loops:
+        if not self.solved:
             return starts[0]
         th, err = newton(self.topology, starts, range(1, n), self.tol, iterations=80, damping=1e-9)
         good = np.flatnonzero(err <= self.accept)
@@ -125,30 +157,57 @@ class LinkageKinematics(Kinematics):
             raise ValueError(
                 f"the linkage does not assemble: from {len(starts)} starting configurations the loop-closure "
                 f"gap stays >= {err.min():.3g} m (check the joint points: a loop must be able to close)")
-        return th[good[0]]
+        return self._regular(th[good[0]])
+
+    def _regular(self, at: np.ndarray) -> np.ndarray:
+        """``at`` if the closure Jacobian has its local generic rank there; otherwise a nearby
+        assembled configuration (about 0.02 rad away) where the rank is higher. At a change point this
+        picks the branch on which the most pairs of bodies keep their relative angle (a parallelogram
+        drawn flat stays a parallelogram: crank and rocker stay parallel, and so do coupler and ground);
+        among equals, the most mobile branch, then the one whose joints' relative angles change least
+        for the size of the move."""
+        moving = range(1, self.nvar)
+        rank0 = self._rank(at, moving)
+        kick = np.random.default_rng(1).normal(0.0, 0.02, (24, self.nvar)) * self.scale
+        kick[:, 0] = 0.0
+        near, err = newton(self.topology, at + kick, moving, self.tol, iterations=80, damping=1e-9)
+        delta = (near - at) / self.scale
+        size = np.abs(delta).max(axis=-1)
+        ok = (err <= self.accept) & (size < 0.2) & (size > 1e-6)
+        ranks = np.array([self._rank(y, moving) if o else -1 for y, o in zip(near, ok)])
+        if not ok.any() or ranks.max() <= rank0:
+            return at
+        pick = ok & (ranks > rank0)
+        pairs = np.abs(delta[:, :, None] - delta[:, None, :]) <= 1e-6 * np.maximum(size, 1e-300)[:, None, None]
+        kept = pairs.sum((1, 2))
+        rel = np.stack([delta[:, j.body_i] - delta[:, j.body_j] for j in self.joints], -1)
+        change = (rel ** 2).sum(-1) / np.maximum(size, 1e-300) ** 2
+        # off the singular point first, then most pairs kept, then the most mobile branch, then least change
+        order = np.lexsort((change, ranks, -kept, ~pick))
+        return near[int(order[0])]
 
     def _rank(self, angles: np.ndarray, columns) -> int:
-        if not self.topology.loops:
+        if not self.solved:
             return 0
-        jac = self.topology.residual_and_jacobian(angles)[1][:, list(columns)]
+        jac = (self.topology.residual_and_jacobian(angles)[1] * self.scale)[:, list(columns)]
         s = np.linalg.svd(jac, compute_uv=False)
         return int((s > 1e-9 * max(s.max(), 1e-300)).sum()) if s.size else 0
 
     def _mobility(self) -> None:
-        moving = range(1, self.nbodies)
+        moving = range(1, self.nvar)
         rank = self._rank(self.assembled, moving)
         self.rank = rank
-        mobility = self.nbodies - 1 - rank
+        mobility = self.nvar - 1 - rank
         if mobility <= 0:
             raise ValueError(
                 f"the linkage is over-constrained: it cannot move (Grübler's count 3(n - 1) - 2j = "
-                f"{self.grubler} with n = {self.nbodies} bodies and j = {len(self.joints)} joints; "
-                f"the constraint Jacobian has rank {rank} for {self.nbodies - 1} body angles)")
+                f"{self.grubler} with n = {self.nbodies} bodies and j = {len(self.joints) + len(self.sliders)} "
+                f"joints; the constraint Jacobian has rank {rank} for {self.nvar - 1} body angles and slides)")
         self.redundant = mobility - self.grubler  # constraints that do not count (e.g. a parallelogram's)
 
     def _driving(self, driving) -> tuple[int, ...]:
-        dof = self.nbodies - 1 - self.rank
-        moving = list(range(1, self.nbodies))
+        dof = self.nvar - 1 - self.rank
+        moving = list(range(1, self.nvar))
         if driving is None:
             chosen: list[int] = []
             for b in moving:
@@ -159,14 +218,17 @@ class LinkageKinematics(Kinematics):
                     chosen.append(b)
             return tuple(chosen)
         chosen = [int(b) for b in driving]
-        if len(chosen) != dof or len(set(chosen)) != dof or not all(1 <= b < self.nbodies for b in chosen):
-            raise ValueError(f"driving must name {dof} distinct moving bodies (the linkage has {dof} degrees "
-                             f"of freedom), got {[self.body_names[b] if 0 <= b < self.nbodies else b for b in chosen]}")
+        if len(chosen) != dof or len(set(chosen)) != dof or not all(1 <= b < self.nvar for b in chosen):
+            raise ValueError(f"driving must name {dof} distinct moving bodies or slides (the linkage has {dof} "
+                             f"degrees of freedom), got {[self._label(b) for b in chosen]}")
         rest = [c for c in moving if c not in chosen]
         if self._rank(self.assembled, rest) != self.rank:
-            raise ValueError(f"the angles of the driving bodies {[self.body_names[b] for b in chosen]} do not "
+            raise ValueError(f"the driving coordinates {[self._label(b) for b in chosen]} do not "
                              "determine the other bodies in the assembled configuration; choose other driving bodies")
         return tuple(chosen)
+
+    def _label(self, v: int):
+        return self.body_names[v] if 0 <= v < self.nbodies else self.variable_name(v) if v < self.nvar else v
 
     def _predict(self, start: np.ndarray, q: np.ndarray) -> np.ndarray:
         """First-order predictor: move the dependent angles of ``start`` along the circuit's tangent
@@ -182,7 +244,8 @@ class LinkageKinematics(Kinematics):
         with np.errstate(all="ignore"):
             dz = -np.linalg.solve(A, (Jzt @ (Jq @ dq[..., None])))[..., 0]
         out = np.array(start, dtype=float, copy=True)
-        out[..., self.dependent] += np.clip(np.where(np.isfinite(dz), dz, 0.0), -0.5, 0.5)
+        lim = 0.5 * self.scale[self.dependent]
+        out[..., self.dependent] += np.clip(np.where(np.isfinite(dz), dz, 0.0), -lim, lim)
         return out
 
     def _solve(self, start: np.ndarray, q: np.ndarray, iterations: int = 12, predict: bool = False):
@@ -190,21 +253,31 @@ class LinkageKinematics(Kinematics):
         th = self._predict(start, q) if predict else np.array(start, dtype=float, copy=True)
         th[..., list(self.driving)] = q
         sol, err = newton(self.topology, th, self.dependent, self.tol, iterations)
-        jump = np.abs(sol[..., self.dependent] - th[..., self.dependent]).max(axis=-1)
+        jump = np.abs((sol - th)[..., self.dependent] / self.scale[self.dependent]).max(axis=-1)
         return sol, (err <= self.accept) & (jump < _JUMP)
 
     def _march(self, direction: int) -> list[np.ndarray]:
-        """Solutions along the driving angle from the assembled configuration (one direction)."""
-        nodes, prev, h, total = [self.assembled], self.assembled, STEP, 0.0
-        slope = np.zeros(self.nbodies)
-        while total < 2 * np.pi - 1e-12 and h > 1e-9:
-            step = min(h, 2 * np.pi - total)
+        """Solutions along the driving coordinate from the assembled configuration (one direction): a
+        turn for an angle, up to the stroke's end for a slide (steps of :data:`STEP` times the size)."""
+        d = self.driving[0]
+        unit = self.scale[d]
+        if d < self.nbodies:
+            length = 2 * np.pi
+        else:
+            lo, hi = self.strokes[d - self.nbodies]
+            length = max((hi if direction > 0 else -lo) + (-1 if direction > 0 else 1) * self.assembled[d], 0.0)
+        top = STEP * unit
+        nodes, prev, h, total = [self.assembled], self.assembled, top, 0.0
+        slope = np.zeros(self.nvar)
+        while total < length - 1e-12 * unit and h > 1e-9 * unit:
+            step = min(h, length - total)
             q = prev[self.driving[0]] + direction * step
-            sol, ok = self._solve(prev + slope * step, np.array([q]))
+            # the first step follows the tangent (the start may sit next to a change point)
+            sol, ok = self._solve(prev + slope * step, np.array([q]), predict=len(nodes) == 1)
             if ok:
                 slope = (sol - prev) / step
                 nodes.append(sol)
-                prev, total, h = sol, total + step, min(2 * h, STEP)
+                prev, total, h = sol, total + step, min(2 * h, top)
             else:
                 h /= 2
         return nodes
@@ -213,7 +286,7 @@ class LinkageKinematics(Kinematics):
         d = self.driving[0]
         up = self._march(+1)
         q0 = self.assembled[d]
-        closed = (abs(up[-1][d] - q0 - 2 * np.pi) < 1e-9 and
+        closed = (d < self.nbodies and abs(up[-1][d] - q0 - 2 * np.pi) < 1e-9 and
                   np.allclose(np.angle(np.exp(1j * (up[-1] - self.assembled))), 0.0, atol=1e-6))
         if closed:
             self.full_turn = True
@@ -229,9 +302,10 @@ class LinkageKinematics(Kinematics):
     def _hermite(self, table: np.ndarray) -> np.ndarray:
         """Cubic Hermite coefficients ``(intervals, 4, dependent)`` of the dependent angles between
         the table's nodes, from the tangents ``dz/dq`` there; linear where a tangent is too steep."""
-        d, dq = self.driving[0], 1e-3
+        d = self.driving[0]
+        dq = 1e-3 * self.scale[d]
         slope = (self._predict(table, table[:, [d]] + dq) - table)[:, self.dependent] / dq
-        smooth = np.all(np.abs(slope) < 0.49 / dq, axis=-1)  # the tangent was not clipped
+        smooth = np.all(np.abs(slope) * dq < 0.49 * self.scale[self.dependent], axis=-1)  # the tangent was not clipped
         z = table[:, self.dependent]
         h = np.diff(table[:, d])[:, None]
         delta, s0, s1 = np.diff(z, axis=0), h * slope[:-1], h * slope[1:]
@@ -240,15 +314,25 @@ class LinkageKinematics(Kinematics):
         return np.where((smooth[:-1] & smooth[1:])[:, None, None], cubic, line)
 
     def _fill_grid(self) -> None:
-        """Flood-fill a grid over one turn of each driving angle from the assembled configuration."""
+        """Flood-fill a grid over one turn of each driving angle (the stroke of a driving slide) from the
+        assembled configuration."""
         dof = self.dof
         m = max(9, int(round(4000 ** (1 / dof))) | 1)
         q0 = self.assembled[list(self.driving)]
-        axes = [q0[i] + np.linspace(-np.pi, np.pi, m) for i in range(dof)]
+        axes = [q0[i] + np.linspace(-np.pi, np.pi, m) if d < self.nbodies else
+                np.linspace(*self.strokes[d - self.nbodies], m) for i, d in enumerate(self.driving)]
         shape = (m,) * dof
-        sol = np.full(shape + (self.nbodies,), np.nan)
+        sol = np.full(shape + (self.nvar,), np.nan)
         seen = np.zeros(shape, dtype=bool)
-        centre = (m // 2,) * dof
+        centre = tuple(m // 2 if d < self.nbodies else int(np.argmin(np.abs(axes[i] - q0[i])))
+                       for i, d in enumerate(self.driving))
+        # the assembled configuration, moved onto the grid node nearest to it along each slide
+        got, ok = self._solve(self.assembled[None], np.array([[axes[i][c] for i, c in enumerate(centre)]]),
+                              predict=True)
+        if not ok[0]:
+            raise ValueError("the linkage does not assemble at the grid node next to its assembled configuration; "
+                             "pass strokes that contain it or a guess=")
+        self.assembled = got[0]
         sol[centre], seen[centre] = self.assembled, True
         frontier = [centre]
         while frontier:
@@ -272,15 +356,15 @@ class LinkageKinematics(Kinematics):
             for c, g in zip(frontier, got[ok]):
                 sol[c] = g
         solved = ~np.isnan(sol[..., 0])
-        if solved.all():  # every node of the turn: a full turn when the opposite faces agree modulo 2 pi
+        if solved.all() and all(d < self.nbodies for d in self.driving):  # a full turn when opposite faces agree
             faces = [np.take(sol, [0, m - 1], axis=i) for i in range(dof)]
             self.full_turn = all(np.allclose(np.angle(np.exp(1j * (f.take(0, axis=i) - f.take(1, axis=i)))), 0.0,
                                              atol=1e-6) for i, f in enumerate(faces))
         idx = np.argwhere(solved)
-        half = np.pi / (m - 1)
-        self.q_range = np.array([[max(axes[i][idx[:, i].min()] - half, axes[i][0]),
-                                  min(axes[i][idx[:, i].max()] + half, axes[i][-1])] for i in range(dof)])
-        self._grid = (np.array([a[0] for a in axes]), 2 * np.pi / (m - 1), sol)
+        steps = np.array([a[1] - a[0] for a in axes])
+        self.q_range = np.array([[max(axes[i][idx[:, i].min()] - steps[i] / 2, axes[i][0]),
+                                  min(axes[i][idx[:, i].max()] + steps[i] / 2, axes[i][-1])] for i in range(dof)])
+        self._grid = (np.array([a[0] for a in axes]), steps, sol)
 
     # ------------------------------------------------------------------ poses
     def _start(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -291,7 +375,7 @@ class LinkageKinematics(Kinematics):
             j = np.clip(np.searchsorted(tq, x) - 1, 0, len(tq) - 2)
             w = ((x - tq[j]) / (tq[j + 1] - tq[j]))[..., None]
             c = coef[j]
-            th = np.zeros(q.shape[:-1] + (self.nbodies,))
+            th = np.zeros(q.shape[:-1] + (self.nvar,))
             th[..., self.dependent] = ((c[..., 3, :] * w + c[..., 2, :]) * w + c[..., 1, :]) * w + c[..., 0, :]
             th[..., self.driving[0]] = q[..., 0]
             return th, np.ones(q.shape[:-1], dtype=bool)
@@ -311,7 +395,8 @@ class LinkageKinematics(Kinematics):
         return start, good
 
     def angles(self, q) -> tuple[np.ndarray, np.ndarray]:
-        """All body angles ``(..., nbodies)`` (rad) at configurations ``q`` and the reachable mask."""
+        """All variables ``(..., nvar)`` (body angles in rad, then slides in m) at configurations ``q``
+        and the reachable mask."""
         q = np.asarray(q, dtype=float)
         lo, hi = self.q_range[:, 0], self.q_range[:, 1]
         if self.full_turn:  # every angle is reachable (the table is looked up modulo a turn)
@@ -319,9 +404,12 @@ class LinkageKinematics(Kinematics):
         else:
             inside = np.all((q >= lo - 1e-12) & (q <= hi + 1e-12), axis=-1)
         if not self.topology.loops:
-            th = np.zeros(q.shape[:-1] + (self.nbodies,))
+            th = np.zeros(q.shape[:-1] + (self.nvar,))
             th[..., list(self.driving)] = q
-            return th, inside
+            if not self.solved:
+                return th, inside
+            th, ok = self._solve(th, q, iterations=3)  # a tree with sliders: the relative angles, linear
+            return th, inside & ok
         start, good = self._start(q)
         if self._grid is not None:  # the last sub-step solved at q already
             return start, inside & good
@@ -339,14 +427,15 @@ class LinkageKinematics(Kinematics):
         return tuple(sp.Symbol(n, real=True) for n in self.names)
 
     def symbolic_point(self, body, point, syms):
-        """Global position of a body point as sympy expressions (trees only: every angle a symbol)."""
-        if self.topology.loops:
-            raise NotImplementedError("a linkage with loops has numeric kinematics only; its energy is "
-                                      "checked numerically by balance_report()")
+        """Global position of a body point as sympy expressions (trees of revolute joints only: every
+        angle a symbol)."""
+        if self.solved:
+            raise NotImplementedError("a linkage with loops or sliders has numeric kinematics only; its energy "
+                                      "is checked numerically by balance_report()")
         import sympy as sp
 
         angle = dict(zip(self.driving, syms))
-        coef = self.topology.point(body, point)
+        coef, _ = self.topology.point(body, point)
         x, y = sp.Float(coef[0, 0]) if coef[0, 0] else 0, sp.Float(coef[0, 1]) if coef[0, 1] else 0
         for b in range(1, self.nbodies):
             if coef[b].any():

@@ -1,27 +1,54 @@
-"""Loop closure of any planar linkage of revolute joints, in the absolute body angles.
+"""Loop closure of any planar linkage of revolute and prismatic joints, in the absolute body
+angles and the slides.
 
 A spanning tree of the joints, grown breadth first from the ground, places every body
-once its angle is known: the world position of any body point is a fixed linear
-combination of the rotations of the bodies met on the way from the ground,
+once its angle (and the slides met on the way) are known: the world position of any body
+point is a fixed linear combination of the rotations of the bodies met on the way from the
+ground,
 
-.. math:: w = c_0 + \\sum_b R(\\theta_b)\\, c_b ,
+.. math:: w = c_0 + \\sum_b R(\\theta_b)\\, c_b + \\sum_p \\sigma_p s_p R(\\theta_{a_p}) u_p ,
 
-with constant vectors ``c_b`` (m). :class:`Topology` stores these coefficients (arrays
-of shape ``(nbodies, 2)``) for every body origin and for every joint outside the tree;
-each such joint closes a loop with two scalar equations of the same form. Residuals,
+with constant vectors ``c_b`` (m), and for each prismatic joint ``p`` (a :class:`Slider`:
+``point_b`` of ``body_b`` on the line through ``point_a`` of ``body_a`` along the unit ``axis``
+``u_p`` of ``body_a``) its slide ``s_p`` (m) with a sign ``sigma_p`` of -1, 0 or 1.
+:class:`Topology` stores these coefficients for every body origin and for every joint
+outside the tree; a revolute joint outside the tree closes a loop with two scalar
+equations, a prismatic one with three (its point on its line, two; the relative angle of its
+bodies kept, one), and a prismatic joint in the tree adds the relative-angle equation only.
+The variables are the body angles followed by the slides. Residuals,
 their Jacobian with respect to the angles (``d/dtheta R c = R J c``) and a vectorized
 Newton solve for the dependent angles follow from these arrays in a few lines of numpy.
 Layer: mechanisms.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
 
 from ...core.elements import Joint
 
-__all__ = ["Topology", "combine", "newton"]
+__all__ = ["Slider", "Topology", "combine", "newton"]
+
+
+@dataclass(frozen=True)
+class Slider:
+    """A prismatic joint: ``point_b`` of ``body_b`` slides along the line through ``point_a`` of
+    ``body_a`` with the unit direction ``axis`` (in ``body_a``'s frame); the two bodies keep their
+    relative angle (the drawn one, zero). The slide ``s`` (m) is the distance from ``point_a``.
+
+    Examples
+    --------
+    >>> Slider(0, (0.0, 0.0), 1, (0.0, 0.0), (1.0, 0.0)).axis
+    (1.0, 0.0)
+    """
+
+    body_a: int
+    point_a: tuple
+    body_b: int
+    point_b: tuple
+    axis: tuple
 
 
 def combine(coef: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -52,7 +79,7 @@ def combine(coef: np.ndarray, cos: np.ndarray, sin: np.ndarray) -> tuple[np.ndar
 
 
 class Topology:
-    """Spanning tree, body-origin coefficients and loop-closure equations of a linkage.
+    """Spanning tree, body-origin coefficients and closure equations of a linkage.
 
     Parameters
     ----------
@@ -60,17 +87,24 @@ class Topology:
         Number of bodies, the ground (body 0) included.
     joints : sequence of Joint
         Revolute joints between the bodies.
+    sliders : sequence of Slider, optional
+        Prismatic joints.
+    size : float
+        Length scale (m) of the angle equations (so that every equation is in metres).
 
     Attributes
     ----------
     tree : list of (int, int)
-        ``(joint index, child body)`` of the spanning-tree joints, in breadth-first order.
+        ``(joint index, child body)`` of the spanning-tree joints, in breadth-first order; a
+        prismatic joint ``p`` has the index ``len(joints) + p``.
     loops : list of int
-        Indices of the joints that close loops (two equations each).
+        Indices of the joints that close loops.
     origin : numpy.ndarray, shape (nbodies, nbodies, 2)
         ``origin[b]``: coefficients of the world position of body ``b``'s frame origin.
-    closure : numpy.ndarray, shape (len(loops), nbodies, 2)
-        Coefficients of the gap vector (side ``i`` minus side ``j``) of each loop joint.
+    origin_slide : numpy.ndarray, shape (nbodies, nsliders)
+        ``origin_slide[b, p]``: the sign with which slide ``p`` enters it.
+    nvar : int
+        Number of variables: ``nbodies`` angles, then one slide per prismatic joint.
 
     Raises
     ------
@@ -80,33 +114,69 @@ class Topology:
     Examples
     --------
     >>> t = Topology(3, [Joint(0, (0.0, 0.0), 1, (0.0, 0.0)), Joint(1, (1.0, 0.0), 2, (0.0, 0.0))])
-    >>> t.loops, t.origin[2].tolist()
-    ([], [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]])
+    >>> t.loops, t.origin[2].tolist(), t.nvar
+    ([], [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]], 3)
     """
 
-    def __init__(self, nbodies: int, joints: Sequence[Joint]):
+    def __init__(self, nbodies: int, joints: Sequence[Joint], sliders: Sequence[Slider] = (), size: float = 1.0):
         self.nbodies = int(nbodies)
         self.joints = [Joint(*j) for j in joints]
+        self.sliders = [p if isinstance(p, Slider) else Slider(*p) for p in sliders]
+        self.size = float(size)
+        n, P = self.nbodies, len(self.sliders)
+        self.nvar = n + P
+        # direction of each slide, as a coefficient array on its body a: R(theta_a) u_p
+        self.slide_dir = np.zeros((P, n, 2))
+        for i, sl in enumerate(self.sliders):
+            self.slide_dir[i, sl.body_a] = sl.axis
         self.tree, self.loops = self._spanning_tree()
-        n = self.nbodies
         self.origin = np.zeros((n, n, 2))
+        self.origin_slide = np.zeros((n, P))
+        nj = len(self.joints)
         for j, child in self.tree:
-            jt = self.joints[j]
-            parent, pp, pc = ((jt.body_i, jt.point_i, jt.point_j) if jt.body_j == child
-                              else (jt.body_j, jt.point_j, jt.point_i))
+            if j < nj:
+                jt = self.joints[j]
+                parent, pp, pc = ((jt.body_i, jt.point_i, jt.point_j) if jt.body_j == child
+                                  else (jt.body_j, jt.point_j, jt.point_i))
+                sign = 0.0
+            else:
+                sl = self.sliders[j - nj]
+                parent, pp, pc = ((sl.body_a, sl.point_a, sl.point_b) if sl.body_b == child
+                                  else (sl.body_b, sl.point_b, sl.point_a))
+                sign = 1.0 if sl.body_b == child else -1.0
             self.origin[child] = self.origin[parent]
+            self.origin_slide[child] = self.origin_slide[parent]
             self.origin[child, parent] += pp
             self.origin[child, child] -= pc
-        self.closure = np.array([self.point(jt.body_i, jt.point_i) - self.point(jt.body_j, jt.point_j)
-                                 for jt in (self.joints[j] for j in self.loops)]).reshape(-1, n, 2)
+            if sign:
+                self.origin_slide[child, j - nj] += sign
+        rows, srows, self.angle_rows = [], [], []
+        for j in self.loops:
+            if j < nj:
+                jt = self.joints[j]
+                (ci, si), (cj, sj) = self.point(jt.body_i, jt.point_i), self.point(jt.body_j, jt.point_j)
+                rows.append(ci - cj)
+                srows.append(si - sj)
+            else:
+                p = j - nj
+                sl = self.sliders[p]
+                (ca, sa), (cb, sb) = self.point(sl.body_a, sl.point_a), self.point(sl.body_b, sl.point_b)
+                sa = sa.copy()
+                sa[p] += 1.0  # point_a + s_p u_p - point_b
+                rows.append(ca - cb)
+                srows.append(sa - sb)
+        self.angle_rows = [(sl.body_a, sl.body_b) for sl in self.sliders]
+        self.closure = np.array(rows).reshape(-1, n, 2)
+        self.closure_slide = np.array(srows, dtype=float).reshape(len(rows), P)
 
     def _spanning_tree(self):
+        edges = [(jt.body_i, jt.body_j) for jt in self.joints] + [(s.body_a, s.body_b) for s in self.sliders]
         reached, tree, frontier = {0}, [], [0]
         while frontier:
             nxt = []
             for b in frontier:
-                for j, jt in enumerate(self.joints):
-                    other = jt.body_j if jt.body_i == b else jt.body_i if jt.body_j == b else None
+                for j, (bi, bj) in enumerate(edges):
+                    other = bj if bi == b else bi if bj == b else None
                     if other is not None and other not in reached:
                         reached.add(other)
                         tree.append((j, other))
@@ -116,38 +186,66 @@ class Topology:
             missing = sorted(set(range(self.nbodies)) - reached)
             raise ValueError(f"bodies {missing} are not connected to the ground through any chain of joints")
         used = {j for j, _ in tree}
-        return tree, [j for j in range(len(self.joints)) if j not in used]
+        return tree, [j for j in range(len(edges)) if j not in used]
 
-    def point(self, body: int, point) -> np.ndarray:
-        """Coefficients ``(nbodies, 2)`` of the world position of a local ``point`` of ``body``."""
+    def point(self, body: int, point) -> tuple[np.ndarray, np.ndarray]:
+        """Coefficients ``(nbodies, 2)`` and slide signs ``(nsliders,)`` of the world position of a
+        local ``point`` of ``body``."""
         c = self.origin[body].copy()
         c[body] += np.asarray(point, dtype=float)
-        return c
+        return c, self.origin_slide[body].copy()
 
     @property
     def nequations(self) -> int:
-        """Number of scalar loop-closure equations (two per loop joint)."""
-        return 2 * len(self.loops)
+        """Number of scalar closure equations: two per loop joint, one per prismatic joint's angle."""
+        return 2 * len(self.loops) + len(self.sliders)
 
-    def residual_and_jacobian(self, angles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Loop-closure gaps ``(..., 2L)`` (m) and their Jacobian ``(..., 2L, nbodies)`` (m/rad).
+    def _effective(self, coef: np.ndarray, signs: np.ndarray, slides: np.ndarray) -> np.ndarray:
+        """``coef`` with the slide terms folded in: ``c_b + sum_p sign_p s_p u_p [b == a_p]``."""
+        if not len(self.sliders):
+            return coef
+        return coef + np.einsum("...p,mp,pbk->...mbk", slides, signs, self.slide_dir)
 
-        ``angles`` has shape ``(..., nbodies)`` with the ground's angle (column 0) zero.
+    def residual_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Closure gaps ``(..., E)`` (m) and their Jacobian ``(..., E, nvar)`` (m/rad, m/m).
+
+        ``x`` has shape ``(..., nvar)``: the body angles (the ground's, column 0, zero), then the slides.
         """
-        x, y = combine(self.closure, np.cos(angles), np.sin(angles))
-        lead = angles.shape[:-1]
-        res = np.empty(lead + (self.nequations,))
-        res[..., 0::2], res[..., 1::2] = x.sum(-1), y.sum(-1)
-        jac = np.empty(lead + (self.nequations, self.nbodies))
-        jac[..., 0::2, :], jac[..., 1::2, :] = -y, x
+        n = self.nbodies
+        angles, slides = x[..., :n], x[..., n:]
+        c, s = np.cos(angles), np.sin(angles)
+        lead = x.shape[:-1]
+        L = len(self.loops)
+        res = np.zeros(lead + (self.nequations,))
+        jac = np.zeros(lead + (self.nequations, self.nvar))
+        if L:
+            coef = self._effective(self.closure, self.closure_slide, slides)
+            gx, gy = combine(coef, c, s)
+            res[..., 0:2 * L:2], res[..., 1:2 * L:2] = gx.sum(-1), gy.sum(-1)
+            jac[..., 0:2 * L:2, :n], jac[..., 1:2 * L:2, :n] = -gy, gx
+            for p in range(len(self.sliders)):
+                dx, dy = combine(self.closure_slide[:, p, None, None] * self.slide_dir[p], c, s)
+                jac[..., 0:2 * L:2, n + p], jac[..., 1:2 * L:2, n + p] = dx.sum(-1), dy.sum(-1)
+        for k, (a, b) in enumerate(self.angle_rows):  # the relative angle kept, in metres
+            res[..., 2 * L + k] = self.size * (angles[..., b] - angles[..., a])
+            jac[..., 2 * L + k, b] += self.size
+            jac[..., 2 * L + k, a] -= self.size
         return res, jac
 
-    def poses(self, angles: np.ndarray) -> np.ndarray:
-        """Body poses ``(x, y, angle)``, shape ``(..., nbodies, 3)``, from all body angles."""
+    def poses(self, x: np.ndarray) -> np.ndarray:
+        """Body poses ``(x, y, angle)``, shape ``(..., nbodies, 3)``, from the variables ``(..., nvar)``."""
+        n = self.nbodies
+        angles = x[..., :n]
         c, s = np.cos(angles), np.sin(angles)  # x = sum_b c_b O[., b, 0] - s_b O[., b, 1], as matrix products
-        x = c @ self.origin[..., 0].T - s @ self.origin[..., 1].T
-        y = s @ self.origin[..., 0].T + c @ self.origin[..., 1].T
-        return np.stack([x, y, angles], axis=-1)
+        px = c @ self.origin[..., 0].T - s @ self.origin[..., 1].T
+        py = s @ self.origin[..., 0].T + c @ self.origin[..., 1].T
+        if self.sliders:
+            sx, sy = combine(self.slide_dir, c, s)  # (..., P, n): R(theta_a) u_p, on its body's column
+            ux, uy = sx.sum(-1), sy.sum(-1)
+            slides = x[..., n:]
+            px = px + (slides * ux) @ self.origin_slide.T
+            py = py + (slides * uy) @ self.origin_slide.T
+        return np.stack([px, py, angles], axis=-1)
 
 
 def _solve_small(A: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -174,10 +272,10 @@ def newton(topology: Topology, angles: np.ndarray, dependent: Sequence[int], tol
     Parameters
     ----------
     topology : Topology
-    angles : numpy.ndarray, shape (..., nbodies)
-        Starting angles (rad); modified copy returned.
+    angles : numpy.ndarray, shape (..., nvar)
+        Starting variables (rad, and m for slides); modified copy returned.
     dependent : sequence of int
-        Bodies whose angles are solved for.
+        Variables solved for (body indices; ``nbodies + p`` for slide ``p``).
     tol : float
         Convergence tolerance on the largest gap (m); a configuration whose gap stops shrinking
         (round-off) within ``1000 tol`` counts as converged too.
@@ -201,6 +299,7 @@ def newton(topology: Topology, angles: np.ndarray, dependent: Sequence[int], tol
     """
     th = np.array(angles, dtype=float, copy=True)
     dep = list(dependent)
+    lim = np.where(np.array(dep, dtype=int) >= topology.nbodies, 0.5 * topology.size, 0.5)  # rad; m for slides
     prev = np.full(th.shape[:-1], np.inf)
     for _ in range(iterations + 1):
         res, jac = topology.residual_and_jacobian(th)
@@ -218,5 +317,5 @@ def newton(topology: Topology, angles: np.ndarray, dependent: Sequence[int], tol
         with np.errstate(all="ignore"):
             step = _solve_small(A, -(Jt @ res[..., None])[..., 0])
         step = np.where(np.isfinite(step) & ~done[..., None], step, 0.0)
-        th[..., dep] += np.clip(step, -0.5, 0.5)
+        th[..., dep] += np.clip(step, -lim, lim)
     return th, np.where(np.isfinite(err), err, np.inf)

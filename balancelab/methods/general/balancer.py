@@ -4,6 +4,8 @@ Layer: methods. See the package docstring for the method and its justification.
 """
 from __future__ import annotations
 
+import contextlib
+import warnings
 from typing import Sequence
 
 import numpy as np
@@ -14,10 +16,13 @@ from ...core.validation import planar_point, positive_int
 from ..lustig.solving import InfeasibleDesign
 from .problem import Block, columns
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
+from .verdicts import infeasible
 
 __all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
 
 _ROUNDS = 8  # alternations for springs whose two ends are both free
+_STARTS = 6  # starting points tried for them
+_CONTROLLER = None  # threadpoolctl's view of the loaded BLAS libraries, made on first use
 
 
 def _body(design: Design, body, what: str) -> int:
@@ -81,14 +86,22 @@ def _blocks(design: Design, springs, counterweights, box) -> list[Block]:
     return blocks
 
 
-def _default_point(design: Design, body: int, size: float) -> tuple[float, float]:
-    """Where a both-free spring end starts: half-way to the body's farthest joint, or above the ground."""
+def _default_point(design: Design, body: int, size: float, index: int = 0, start: int = 0) -> tuple[float, float]:
+    """Where a both-free spring end starts. Start 0: half-way to the body's farthest joint, or above the
+    ground (every candidate alike); start ``s > 0``: a point ``size / 2`` or less from there, in a
+    direction that differs from candidate to candidate (golden-angle steps) and from start to start."""
     pts = [p for j in design.joints for (b, p) in ((j.body_i, j.point_i), (j.body_j, j.point_j)) if b == body]
     if body == 0:
         x, y = pts[0] if pts else (0.0, 0.0)
-        return (x, y + size / 2)
-    far = max(pts, key=lambda p: np.hypot(*p), default=(0.0, 0.0))
-    return (far[0] / 2, far[1] / 2) if np.hypot(*far) > 0 else (size / 2, 0.0)
+        x, y = x, y + size / 2
+    else:
+        far = max(pts, key=lambda p: np.hypot(*p), default=(0.0, 0.0))
+        x, y = (far[0] / 2, far[1] / 2) if np.hypot(*far) > 0 else (size / 2, 0.0)
+    if start == 0:
+        return (x, y)
+    angle = 2.399963 * (index + 1) * start
+    r = size / 2 * (0.4 + 0.6 * ((index + start) % 3) / 2)
+    return (x + r * np.cos(angle), y + r * np.sin(angle))
 
 
 def _objective_value(p, x: np.ndarray, objective: str) -> float:
@@ -103,17 +116,12 @@ def _objective_value(p, x: np.ndarray, objective: str) -> float:
     return float(val)
 
 
-def _solve_alternating(design, blocks, q, objective):
-    """Solve; springs with two free ends alternate which end is free (each round keeps balance)."""
-    both = [b for b in blocks if b.kind == "spring" and b.ends[0][1] is None and b.ends[1][1] is None]
-    size = _size(design)
-    for b in both:
-        b.ends[1] = (b.ends[1][0], _default_point(design, b.ends[1][0], size))
-        b.free = 0
+def _rounds(design, blocks, both, q, objective):
+    """Alternate which end of the both-free springs is free (each round keeps balance); the best round."""
     best = None
-    for round_ in range(_ROUNDS if both else 1):
+    for _ in range(_ROUNDS):
         p = columns(design, blocks, q)
-        sol = solve(p, objective)
+        sol = solve(p, objective, maxiter=60)  # each round is a step of a heuristic: a short convex step
         value = _objective_value(p, sol.x, objective)
         if best is not None and value >= best[0] * (1 - 1e-9):
             break
@@ -130,10 +138,55 @@ def _solve_alternating(design, blocks, q, objective):
     return p, sol
 
 
+def _solve_alternating(design, blocks, q, objective):
+    """Solve; springs with two free ends are bilinear: from each of :data:`_STARTS` starts (start 0:
+    every second end at :func:`_default_point`; then, alternately the first and the second end fixed
+    at points distinct for every candidate) the free end alternates (:func:`_rounds`); the first
+    start that balances is kept. If none does, the lifted problem (the products ``k p_a p_b`` as
+    unknowns of their own, :func:`.problem.columns` with ``free == "both"``) decides whether the
+    candidates are impossible for any rates; otherwise the last start's verdict is reported."""
+    both = [b for b in blocks if b.kind == "spring" and b.ends[0][1] is None and b.ends[1][1] is None]
+    if not both:
+        p = columns(design, blocks, q)
+        return p, solve(p, objective)
+    size = _size(design)
+    last = None
+    for start in range(_STARTS):
+        fixed = 1 if start % 2 == 0 else 0  # even starts fix the second end first, odd ones the first
+        for i, b in enumerate(both):
+            body = b.ends[fixed][0]
+            b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
+            b.ends[fixed] = (body, _default_point(design, body, size, i, start))
+            b.free = 1 - fixed
+        try:
+            return _rounds(design, blocks, both, q, objective)
+        except InfeasibleDesign as err:
+            last = err
+    for b in both:
+        b.ends, b.free = [(b.ends[0][0], None), (b.ends[1][0], None)], "both"
+    lifted = columns(design, blocks, q)
+    if infeasible(lifted, column_norms(lifted), objective).verdict == "impossible":
+        raise infeasible(lifted, column_norms(lifted), objective, "; springs with both ends free, lifted")
+    raise last
+
+
+def _active(b, point, names) -> dict:
+    """``{"active_<coordinate>": bound}`` for each coordinate of a solved free point at its box's edge."""
+    out = {}
+    for axis, ((lo, hi), name) in enumerate(zip(b.box, names)):
+        tol = 1e-9 * max(hi - lo, abs(lo), abs(hi), 1e-12)
+        for bound in (lo, hi):
+            if abs(point[axis] - bound) <= tol:
+                out[f"active_{name}"] = float(bound)
+    return out
+
+
 def _elements(design: Design, blocks, x: np.ndarray):
-    """New springs and counterweights (zero rates and masses dropped) and their parameters."""
+    """New springs and counterweights (zero rates and masses dropped), their parameters and the
+    free coordinates that ended at their box's edge (``active_<coordinate>``: the bound, m)."""
     springs, loads, params = list(design.springs), list(design.loads), {}
     size = _size(design)
+    active = {}
     for b in blocks:
         value = float(x[b.cols[0]])
         if value <= 0:
@@ -147,11 +200,46 @@ def _elements(design: Design, blocks, x: np.ndarray):
             springs.append(Spring(value, 0.0, ends[0], ends[1], name=f"k{j}"))
             params.update({f"k{j}": value, f"a_x{j}": float(ends[0][1][0]), f"a_y{j}": float(ends[0][1][1]),
                            f"b_x{j}": float(ends[1][1][0]), f"b_y{j}": float(ends[1][1][1])})
+            if b.free is not None:
+                active.update(_active(b, ends[b.free][1], (f"{'ab'[b.free]}_x{j}", f"{'ab'[b.free]}_y{j}")))
         else:
             j = sum(ld.kind == "counterweight" for ld in loads) + 1
             loads.append(Load(ends[0][0], ends[0][1], (0.0, -value * G), name=f"m_c{j}", kind="counterweight"))
             params.update({f"counter_mass{j}": value, f"c_x{j}": float(ends[0][1][0]), f"c_y{j}": float(ends[0][1][1])})
-    return springs, loads, params
+            if b.free is not None:
+                active.update(_active(b, ends[0][1], (f"c_x{j}", f"c_y{j}")))
+    return springs, loads, params, active
+
+
+def _threads(p_size: int):
+    """A context that limits BLAS to one thread for small problems (threads cost more than they
+    save there: on a loaded two-core machine the minimum preload ran 100 times slower)."""
+    global _CONTROLLER
+    if p_size >= 4_000_000:
+        return contextlib.nullcontext()
+    if _CONTROLLER is None:  # finding the BLAS libraries takes tens of ms: once per process
+        import scipy.optimize  # noqa: F401  (loads scipy's own BLAS, so that the controller sees it)
+        from threadpoolctl import ThreadpoolController
+
+        _CONTROLLER = ThreadpoolController()
+    return _CONTROLLER.limit(limits=1)
+
+
+def _solve_growing(design, springs, counterweights, box, q, objective):
+    """Solve with the given box; with the default box, grow it (as the verdict suggests, at most
+    three times, up to 1000 times the linkage's size) while a point outside it would balance."""
+    size = _size(design)
+    current = _box(box, size)
+    for attempt in range(4):
+        blocks = _blocks(design, springs, counterweights, current)
+        try:
+            p, sol = _solve_alternating(design, blocks, q, objective)
+            return p, sol, current
+        except InfeasibleDesign as err:
+            grow = getattr(err, "verdict", None) == "box" and box is None and attempt < 3
+            if not grow or err.box[0][1] > 1000 * size or err.box[0][1] <= current[0][1]:
+                raise
+            current = err.box
 
 
 def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (), objective: str = "min_preload",
@@ -207,16 +295,30 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
         raise TypeError(f"design must be a balancelab Design, got {type(design).__name__}")
     if objective not in OBJECTIVES:
         raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
-    blocks = _blocks(design, list(springs), list(counterweights), _box(box, _size(design)))
+    _blocks(design, list(springs), list(counterweights), _box(box, _size(design)))  # check the input first
     m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20)
-    q = design.sample(max(m, 6 * 3 * len(blocks)) if n is None else m, seed=0)
+    q = design.sample(max(m, 6 * 3 * (len(springs) + len(counterweights))) if n is None else m, seed=0)
     vl, vs = design.element_energies(q)
     if not (np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) > 0:
         raise ValueError(f"{design.name}: nothing to balance: its loads and springs exchange no energy as it "
                          "moves (keep at least one load, or the spring that loads a spring-loaded mechanism)")
-    p, sol = _solve_alternating(design, blocks, q, objective)
-    new_springs, new_loads, params = _elements(design, p.blocks, sol.x)
-    params.update(conditions_rank=float(sol.rank), free_choices=float(sol.free_choices))
+    with _threads(len(q) * 9 * (len(springs) + len(counterweights))):
+        p, sol, used = _solve_growing(design, list(springs), list(counterweights), box, q, objective)
+    new_springs, new_loads, params, active = _elements(design, p.blocks, sol.x)
+    params.update(conditions_rank=int(sol.rank), free_choices=int(sol.free_choices), active_bounds=len(active),
+                  **active)
+    if any(b.free is not None for b in p.blocks):
+        (xl, xh), (yl, yh) = used
+        params.update(box_x_lo=xl, box_x_hi=xh, box_y_lo=yl, box_y_hi=yh)
+    if sol.unique is False:
+        ignored = sorted({"springs" if b.kind == "spring" else "counterweights" for b in p.blocks
+                          if objective == "min_mass" and b.kind == "spring"
+                          or objective == "min_stiffness" and b.kind == "mass"
+                          or objective == "min_preload" and b.kind == "mass"})
+        warnings.warn(f"{design.name}: objective {objective!r} does not select a unique design: it ignores the "
+                      f"{' and '.join(ignored) or 'candidates'} it does not count, and {sol.free_choices} free "
+                      "choice(s) remain; the design returned is one of many (choose another objective, or fewer "
+                      "candidates)", UserWarning, stacklevel=2)
     out = design.replace(name=f"{design.name}, balanced ({objective})", springs=new_springs, loads=new_loads,
                          parameters={**design.parameters, **params})
     _verify(out, design.sample(400, seed=1))

@@ -71,9 +71,26 @@ def _world(poses, body, point):
     return np.stack([x[..., 0], y[..., 0]], -1)
 
 
+def _lifted_columns(poses, block):
+    """Columns of a spring with both ends free, lifted: ``[k, k p_a, k p_b, k p_a p_b^T]`` (9 columns).
+
+    With ``d = o_a - o_b`` (the bodies' origins), ``k/2 |d + R_a p_a - R_b p_b|^2`` is, up to
+    constants, ``k |d|^2 / 2 + (R_a^T d) . k p_a - (R_b^T d) . k p_b - sum_ij W_ij (R_a^T R_b)_ij``
+    with ``W = k p_a p_b^T``: linear in the nine unknowns, which relax the rank-one ``W``."""
+    (ba, _), (bb, _) = block.ends
+    d = poses[:, ba, :2] - poses[:, bb, :2]
+    ca, sa = np.cos(poses[:, ba, 2]), np.sin(poses[:, ba, 2])
+    cb, sb = np.cos(poses[:, bb, 2]), np.sin(poses[:, bb, 2])
+    c, s = np.cos(poses[:, bb, 2] - poses[:, ba, 2]), np.sin(poses[:, bb, 2] - poses[:, ba, 2])
+    return [0.5 * (d * d).sum(-1), ca * d[:, 0] + sa * d[:, 1], -sa * d[:, 0] + ca * d[:, 1],
+            -(cb * d[:, 0] + sb * d[:, 1]), -(-sb * d[:, 0] + cb * d[:, 1]), -c, s, -s, -c]
+
+
 def _spring_columns(poses, block):
     """Columns of one spring: ``[k]`` or ``[k, m_x, m_y]`` (J per N/m and per N)."""
     (ba, pa), (bb, pb) = block.ends
+    if block.free == "both":
+        return _lifted_columns(poses, block)
     if block.free is None:
         d = _world(poses, ba, pa) - _world(poses, bb, pb)
         return [0.5 * (d * d).sum(-1)]
@@ -99,7 +116,8 @@ def columns(design, blocks, q) -> Problem:
     ----------
     design : Design
     blocks : list of Block
-        Their ``cols`` are set here.
+        Their ``cols`` are set here. A spring whose ``free`` is ``"both"`` gets the nine lifted
+        columns of :func:`_lifted_columns` (a linear relaxation of the bilinear problem).
     q : numpy.ndarray, shape (m, dof)
         Reachable configurations (rad).
 

@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..lustig.solving import InfeasibleDesign
-from .problem import Problem, harmonics
+from ...core.validation import MIN_POSITIVE
+from .problem import Problem
+from .verdicts import infeasible
 
 __all__ = ["OBJECTIVES", "Solution", "solve", "rank_of", "column_norms"]
 
@@ -29,7 +30,8 @@ class Solution:
     """Values ``x`` of the unknowns, the rank of the conditions and the free choices left."""
 
     def __init__(self, x: np.ndarray, rank: int, nvar: int, residual: float):
-        self.x, self.rank, self.nvar, self.residual = x, rank, nvar, residual
+        self.x, self.rank, self.nvar, self.residual = x, int(rank), int(nvar), residual
+        self.unique: bool | None = None
 
     @property
     def free_choices(self) -> int:
@@ -101,65 +103,123 @@ def _cost(p: Problem, objective: str) -> np.ndarray:
     return c
 
 
-def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds) -> np.ndarray:
-    """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP."""
+def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq, bounds, null,
+             maxiter: int = 500) -> np.ndarray:
+    """Minimum mean spring energy with free points: ``c.x + sum |m|^2 / (2 k)``, convex, by SLSQP on
+    the balanced solutions only (the null space ``null`` of the equalities, of the free choices'
+    dimension, from the linear program's answer ``y0``)."""
     from scipy.optimize import minimize
 
-    free = [b.cols for b in p.blocks if b.kind == "spring" and b.free is not None]
+    free = np.array([b.cols for b in p.blocks if b.kind == "spring" and b.free is not None], dtype=int)
+    k, mx, my = free.T
 
     def f(y):
         x = D * y
-        val = c @ x
+        kk = np.maximum(x[k], 1e-12 * D[k])
+        q = x[mx] ** 2 + x[my] ** 2
+        val = c @ x + float(np.sum(0.5 * q / kk))
         grad = c * D
-        for k, mx, my in free:
-            kk = max(x[k], 1e-12 * D[k])
-            q = x[mx] ** 2 + x[my] ** 2
-            val += 0.5 * q / kk
-            grad[k] += -0.5 * q / kk ** 2 * D[k]
-            grad[mx] += x[mx] / kk * D[mx]
-            grad[my] += x[my] / kk * D[my]
+        grad[k] += -0.5 * q / kk ** 2 * D[k]
+        grad[mx] += x[mx] / kk * D[mx]
+        grad[my] += x[my] / kk * D[my]
         return val, grad
 
-    cons = [{"type": "eq", "fun": lambda y: eq[0] @ y - eq[1], "jac": lambda y: eq[0]}]
-    if ineq[0] is not None:
-        cons.append({"type": "ineq", "fun": lambda y: -(ineq[0] @ y), "jac": lambda y: -ineq[0]})
-    res = minimize(f, y0, jac=True, method="SLSQP", bounds=bounds, constraints=cons,
-                   options={"maxiter": 500, "ftol": 1e-15})
-    return res.x if np.all(np.isfinite(res.x)) else y0
+    # on the solutions of the (orthonormal) equalities only: y = y_p + N z, N spanning their null space
+    y_p = eq[0].T @ eq[1]
+    N = null
+    lower = np.array([0.0 if lo == 0.0 else -np.inf for lo, _ in bounds])
+    sign = np.isfinite(lower)
+    rows = [N[sign]] + ([-(ineq[0] @ N)] if ineq[0] is not None else [])
+    rhs = [-y_p[sign]] + ([ineq[0] @ y_p] if ineq[0] is not None else [])
+    G, h = np.vstack(rows), np.concatenate(rhs)  # G z >= h
+
+    def fz(z):
+        val, grad = f(y_p + N @ z)
+        return val, N.T @ grad
+
+    z0 = N.T @ (y0 - y_p)
+    cons = [{"type": "ineq", "fun": lambda z: G @ z - h, "jac": lambda z: G}]
+    res = minimize(fz, z0, jac=True, method="SLSQP", constraints=cons, options={"maxiter": maxiter, "ftol": 1e-15})
+    y = y_p + N @ res.x
+    return y if np.all(np.isfinite(y)) else y0
+
+
+def _negligible(p: Problem, x: np.ndarray) -> np.ndarray:
+    """Candidates whose value is <= 0, or whose energy is below ``1e-12`` of the design's energy
+    variation (leftover rates of 1e-13 N/m and the like): a mask over the variables."""
+    scale = max(float(np.linalg.norm(p.v)), 1e-300)
+    out = np.zeros(p.nvar, dtype=bool)
+    for b in p.blocks:
+        if x[b.cols[0]] <= 0 or np.linalg.norm(p.A[:, b.cols] @ x[b.cols]) <= 1e-12 * scale:
+            out[b.cols] = True
+    return out
 
 
 def _polish(p: Problem, x: np.ndarray, U: np.ndarray) -> np.ndarray:
     """Least-norm correction of the variables off their bounds, to round-off balance.
 
-    The sampled equations are compressed first to the ``rank`` rows ``U^T A`` (``U`` the
-    left singular vectors of the scaled ``A``): the same least-squares problem, smaller."""
-    at_bound = np.zeros(p.nvar, dtype=bool)
-    for b in p.blocks:
-        if x[b.cols[0]] <= 1e-12 * max(np.abs(x).max(), 1e-300):
-            at_bound[b.cols] = True
-            x[b.cols] = 0.0
-    live = ~at_bound
+    Candidates that come out negligible (:func:`_negligible`) are set to exact zeros first,
+    again after each correction. The sampled equations are compressed to the ``rank`` rows
+    ``U^T A`` (``U`` the left singular vectors of the scaled ``A``): the same least-squares
+    problem, smaller. If correcting the moments ``k p`` freely would carry a free point out of
+    its box (or a rate below the smallest admissible one), the points are kept where the
+    solver put them and only the rates and masses are corrected."""
     C, d = U.T @ p.A, U.T @ p.v
-    for _ in range(3):
-        if live.any():
-            x[live] -= np.linalg.lstsq(C[:, live], C @ x + d, rcond=1e-13)[0]
+    free = _correct(p, x, C, d, np.eye(p.nvar))
+    if _admissible(p, free):
+        return free
+    basis = np.zeros((p.nvar, len(p.blocks)))  # each candidate scales as a whole: its point stays
+    for i, b in enumerate(p.blocks):
+        if x[b.cols[0]] > 0:
+            basis[b.cols, i] = x[b.cols] / x[b.cols[0]]
+    return _correct(p, x, C, d, basis)
+
+
+def _correct(p: Problem, x: np.ndarray, C: np.ndarray, d: np.ndarray, basis: np.ndarray) -> np.ndarray:
+    """``x`` corrected along the columns of ``basis`` (those of live candidates) to least squares."""
+    x = np.array(x, dtype=float, copy=True)
+    for _ in range(4):
+        dead = _negligible(p, x)
+        x[dead] = 0.0
+        B = basis[:, ~(dead[:, None] & (basis != 0)).any(0)]
+        if B.shape[1]:
+            x -= B @ np.linalg.lstsq(C @ B, C @ x + d, rcond=1e-13)[0]
+    x[_negligible(p, x)] = 0.0
     return x
 
 
-def solve(p: Problem, objective: str) -> Solution:
+def _admissible(p: Problem, x: np.ndarray) -> bool:
+    """Every spring rate 0 or >= MIN_POSITIVE, every free point in its box (to 1e-9 of its size)."""
+    for b in p.blocks:
+        k = x[b.cols[0]]
+        if k < 0 or b.kind == "spring" and 0 < k < MIN_POSITIVE:
+            return False
+        if b.free is not None and k > 0:
+            for axis, (lo, hi) in enumerate(b.box):
+                v, tol = x[b.cols[1 + axis]] / k, 1e-9 * max(hi - lo, abs(lo), abs(hi), 1e-12)
+                if not lo - tol <= v <= hi + tol:
+                    return False
+    return True
+
+
+def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
     """Solve the sampled problem ``p`` for ``objective`` (one of :data:`OBJECTIVES`).
+
+    ``maxiter`` bounds the iterations of the minimum-preload step (SLSQP).
 
     Returns
     -------
     Solution
         ``x`` (rates, masses and moments in the order of ``p.blocks``' columns), the rank of
-        the conditions and the free choices.
+        the conditions, the free choices, and ``unique``: False when a linear objective leaves
+        other designs of the same objective value (None when not checked).
 
     Raises
     ------
     InfeasibleDesign
         When no solution with non-negative rates and masses (and free points in their
-        boxes) balances the design; the message names the energy terms left over.
+        boxes) balances the design; ``err.verdict`` is one of
+        :data:`~balancelab.methods.general.verdicts.VERDICTS`.
 
     Examples
     --------
@@ -178,47 +238,39 @@ def solve(p: Problem, objective: str) -> Solution:
     start = _cost(p, "min_stiffness") if convex else c  # the linear part alone is unbounded with free points
     lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     if lp.status != 0:
-        raise InfeasibleDesign(_why(p, D, objective, ""))
-    y = lp.x
-    if convex:
-        y = _preload(p, S, c, y, eq, (A_ub, b_ub), bounds)
-    x = _polish(p, S * y, U[:, :r])
-    res = p.A @ x + p.v
-    spread = float(np.ptp(res)) if len(res) else 0.0
-    if spread > 1e-10 * max(p.load_spread, 1e-300):
-        raise InfeasibleDesign(_why(p, D, objective, f"; the best solution leaves {spread:.3g} J"))
-    return Solution(x, r, p.nvar, spread)
+        raise infeasible(p, D, objective)
+    tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds, Vt[r:].T, maxiter), lp.x] if convex else [lp.x]
+    tol = 1e-10 * max(p.load_spread, 1e-300)
+    for y in tries:  # the convex step from the LP's answer, else the LP's (feasible) answer itself
+        x = _polish(p, S * y, U[:, :r])
+        res = p.A @ x + p.v
+        spread = float(np.ptp(res)) if len(res) else 0.0
+        if spread <= tol:
+            break
+    else:
+        raise infeasible(p, D, objective, f"; the best solution leaves {spread:.3g} J")
+    sol = Solution(x, r, p.nvar, spread)
+    if not convex and r < p.nvar:
+        sol.unique = _unique(p, c * S, lp, A_ub, b_ub, eq, bounds)
+    return sol
 
 
-def _label(p: Problem, index: int) -> str:
-    """``springs[i]`` or ``counterweights[j]``: a candidate as the caller wrote it."""
-    kind = p.blocks[index].kind
-    return f"{kind}s[{sum(b.kind == kind for b in p.blocks[:index])}]".replace("masss", "counterweights")
+def _unique(p: Problem, cost: np.ndarray, lp, A_ub, b_ub, eq, bounds) -> bool:
+    """Whether the optimum of a linear objective is one design: the variables of candidates the
+    objective ignores (zero cost) are pushed both ways along a fixed direction on the optimal face."""
+    from scipy.optimize import linprog
 
-
-def _why(p: Problem, D: np.ndarray, objective: str, detail: str) -> str:
-    """The message of an infeasible design: which energy terms cannot be cancelled, and why."""
-    from scipy.optimize import lsq_linear
-
-    lo = np.full(p.nvar, -np.inf)
+    ignored = np.zeros(p.nvar, dtype=bool)
     for b in p.blocks:
-        lo[b.cols[0]] = 0.0
-    free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] * (1 / D)
-    signed = lsq_linear(p.A / D, -p.v, bounds=(lo * D, np.full(p.nvar, np.inf))).x / D
-    unsigned = p.A @ free + p.v
-    head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
-    if np.ptp(unsigned) > 1e-10 * max(p.load_spread, 1e-300):
-        return head + ("even with rates and masses of any sign they cannot make the energy constant; "
-                       f"left over: {_terms(p, unsigned)}")
-    big = max(np.abs(free).max(), 1e-300)
-    need = [_label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
-    cause = (f"balance needs a negative rate or mass for {', '.join(need)}" if need else
-             "balance needs a free point outside its box")
-    return head + f"{cause}; with rates and masses >= 0 these energy terms cannot all vanish: " \
-        f"{_terms(p, p.A @ signed + p.v)}"
-
-
-def _terms(p: Problem, residual: np.ndarray) -> str:
-    """``"0.98 J × cos θ_1, ..."``: the largest terms of an energy residual, as text."""
-    terms = harmonics(p.design, p.poses, residual)
-    return ", ".join(f"{v:.3g} J × {name}" for name, v in terms) or f"{np.ptp(residual):.3g} J"
+        ignored[b.cols] = not cost[b.cols].any()
+    if not ignored.any():
+        return True
+    direction = np.where(ignored, np.random.default_rng(0).uniform(0.5, 1.5, p.nvar), 0.0)
+    slack = 1e-9 * max(abs(lp.fun), 1.0)
+    rows = np.vstack([A_ub, cost]) if A_ub is not None else cost[None]
+    lims = np.append(b_ub, lp.fun + slack) if b_ub is not None else np.array([lp.fun + slack])
+    ends = [linprog(sgn * direction, A_ub=rows, b_ub=lims, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+            for sgn in (1.0, -1.0)]
+    if any(e.status != 0 for e in ends):
+        return True
+    return bool(abs(direction @ (ends[0].x - ends[1].x)) <= 1e-6 * max(np.abs(direction @ lp.x), 1e-3))

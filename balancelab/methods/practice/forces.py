@@ -252,8 +252,10 @@ def joint_tree(design: Design) -> tuple:
     """
     nb, joints = len(design.bodies), design.joints
     if len(joints) != nb - 1:
-        raise ValueError(f"{design.name}: joint loads need joints that form a tree (nbodies - 1 = {nb - 1} "
-                         f"joints), got {len(joints)}; a closed loop is statically indeterminate here")
+        raise ValueError(f"{design.name}: joint loads (and the friction built on them: stays_put, holding "
+                         f"torques) are computed for open chains only today, whose joints form a tree "
+                         f"({nb - 1} joints for {nb} bodies); this design has {len(joints)} joints, a closed loop. "
+                         "A loop of revolute joints is statically determinate, but not supported here yet")
     parent = {0: None}
     child_of = {}
     frontier = [0]

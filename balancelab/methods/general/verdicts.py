@@ -1,0 +1,169 @@
+"""Why a balance problem has no admissible solution: one of three verdicts, each with its evidence.
+
+* ``"impossible"`` — *impossible for any rates*: even with rates and masses of any sign (and
+  free points anywhere) the candidates cannot make the energy constant; the message names the
+  energy terms left over that no candidate can produce (those above ``1e-9`` of the energy the
+  loads exchange);
+* ``"negative"`` — *needs a negative rate or mass*: a solution exists, but only with a negative
+  rate or counter mass, named in the message;
+* ``"box"`` — *needs a point outside the box*: a solution with rates and masses ``>= 0`` exists
+  once the free points may leave the box (up to :data:`WIDER` times wider); the message names the
+  points and a box that would do (``err.box``).
+
+A ZFL spring's free end is found through its moment ``k p``; with ``k -> 0`` and ``|p| -> inf``
+the spring tends to a constant force, which balances anything and is no design. The first
+verdict is proved by a relaxation that allows it (so it is sound); the second is said when no
+solution exists with free points within :data:`WIDER` times the box.
+
+The verdict is stored on the exception (``err.verdict``). Layer: methods.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..lustig.solving import InfeasibleDesign
+from .problem import Problem, harmonics
+
+__all__ = ["VERDICTS", "infeasible", "nice_box"]
+
+#: the three reasons a balance problem has no admissible solution
+VERDICTS = ("impossible", "negative", "box")
+
+_TERM_TOL = 1e-9  # energy terms below this fraction of the loads' exchanged energy are round-off
+
+
+def _error(verdict: str, message: str, box=None) -> InfeasibleDesign:
+    err = InfeasibleDesign(message)
+    err.verdict = verdict
+    err.box = box
+    return err
+
+
+def label(p: Problem, index: int) -> str:
+    """``springs[i]`` or ``counterweights[j]``: a candidate as the caller wrote it."""
+    kind = p.blocks[index].kind
+    return f"{kind}s[{sum(b.kind == kind for b in p.blocks[:index])}]".replace("masss", "counterweights")
+
+
+def nice_box(half: float) -> tuple:
+    """The square box ``((-w, w), (-w, w))`` with ``w`` the next 1, 2 or 5 times a power of ten above ``half``.
+
+    Examples
+    --------
+    >>> nice_box(0.73)
+    ((-1.0, 1.0), (-1.0, 1.0))
+    """
+    e = 10.0 ** np.floor(np.log10(max(half, 1e-12)))
+    w = next(float(m * e) for m in (1, 2, 5, 10) if m * e >= half)
+    return ((-w, w), (-w, w))
+
+
+def terms(p: Problem, residual: np.ndarray) -> str:
+    """``"0.98 J × cos θ_1, ..."``: the energy terms of a residual above the scale-relative tolerance."""
+    tol = _TERM_TOL * max(p.load_spread, 1e-300)
+    found = [(n, v) for n, v in harmonics(p.design, p.poses, residual) if abs(v) > tol]
+    return ", ".join(f"{v:.3g} J × {name}" for name, v in found) or f"{np.ptp(residual):.3g} J in all"
+
+
+def _rates(p: Problem) -> np.ndarray:
+    lo = np.full(p.nvar, -np.inf)
+    for b in p.blocks:
+        lo[b.cols[0]] = 0.0
+    return lo
+
+
+def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> InfeasibleDesign:
+    """The :class:`InfeasibleDesign` (with ``verdict``) of a problem that has no admissible solution.
+
+    Parameters
+    ----------
+    p : Problem
+    D : numpy.ndarray
+        Column norms of ``p.A`` (scaling).
+    objective : str
+    detail : str
+        Appended to the head of the message.
+
+    Examples
+    --------
+    Used by :func:`balancelab.balance`; the tests raise each verdict.
+    """
+    from scipy.optimize import lsq_linear
+
+    head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
+    tol = 1e-10 * max(p.load_spread, 1e-300)
+    free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] / D
+    unsigned = p.A @ free + p.v
+    if np.ptp(unsigned) > tol:
+        return _error("impossible", head + "impossible for any rates: even with rates and masses of any sign "
+                      f"they cannot make the energy constant; left over: {terms(p, unsigned)}")
+    lo = _rates(p)
+    found = _wider(p, D) if any(b.free in (0, 1) for b in p.blocks) else None
+    if found is not None:
+        x, far = found
+        outside = []
+        for i, b in enumerate(p.blocks):
+            k = x[b.cols[0]]
+            if b.free not in (0, 1) or k <= 0:
+                continue
+            pt = x[b.cols[1:]] / k
+            (xl, xh), (yl, yh) = b.box
+            if not (xl <= pt[0] <= xh and yl <= pt[1] <= yh):
+                end = "counterweight" if b.kind == "mass" else f"end {b.free}"
+                outside.append(f"{label(p, i)} {end} at ({pt[0]:.4g}, {pt[1]:.4g}) m")
+        box = nice_box(far)
+        where = ", ".join(outside) or "the free points at the box's edge"
+        return _error("box", head + f"needs a point outside the box {p.blocks[0].box}: {where}; "
+                      f"box={box} would do", box)
+    signed = lsq_linear(p.A / D, -p.v, bounds=(lo, np.full(p.nvar, np.inf))).x / D
+    big = max(np.abs(free).max(), 1e-300)
+    need = [label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
+    who = ", ".join(need) if need else "some of the candidates"
+    far = (" (or, for a free point, the limit of a vanishing rate with the point at infinity: a constant force)"
+           if any(b.free in (0, 1) for b in p.blocks) else "")
+    residual = p.A @ signed + p.v
+    left = (f"these energy terms cannot all vanish: {terms(p, residual)}"
+            if np.ptp(residual) > _TERM_TOL * max(p.load_spread, 1e-300) else
+            "the energy comes out constant only in that limit")
+    return _error("negative", head + f"balance needs a negative rate or mass for {who}{far}; with rates and "
+                  f"masses >= 0 and free points within {WIDER:g} times the box {left}")
+
+
+#: how much wider than the given box (a square about the origin) a free point may go before the
+#: verdict is "negative"
+WIDER = 1000.0
+
+
+def _wider(p: Problem, D: np.ndarray):
+    """A balanced solution with rates and masses >= 0 and free points in the smallest square about
+    the bodies' origins, of half-width 2, 4, ... times the given box's largest bound up to :data:`WIDER`
+    times, that has one: ``(x, half-width)``, or None."""
+    U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
+    r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
+    sigma = max(np.linalg.norm(p.v), 1e-300)
+    base = max([np.abs(b.box).max() for b in p.blocks] + [1e-12])
+    factor = 2.0
+    while factor <= WIDER * 1.0001:
+        x = _in_square(p, D, factor * base, (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma), sigma)
+        if x is not None:
+            return x, factor * base
+        factor *= 2.0 if factor < WIDER / 2 else WIDER / factor if factor < WIDER else 2.0
+    return None
+
+
+def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
+    from scipy.optimize import linprog
+
+    from .solver import _constraints
+
+    boxes = [b.box for b in p.blocks]
+    try:
+        for b in p.blocks:
+            b.box = ((-w, w), (-w, w))
+        S = sigma / D
+        bounds, A_ub, b_ub = _constraints(p, S)
+    finally:
+        for b, box in zip(p.blocks, boxes):
+            b.box = box
+    lp = linprog(np.zeros(p.nvar), A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+    return lp.x * S if lp.status == 0 else None
