@@ -50,7 +50,7 @@ import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
-from dataclasses import asdict
+from dataclasses import asdict, replace
 from pathlib import Path
 
 from . import check as _check
@@ -509,7 +509,9 @@ def _parser() -> argparse.ArgumentParser:
                     help="limit for a whole notebook in s (default 600)")
     ap.add_argument("--jobs", type=int, default=1, help="notebooks graded in parallel (default 1)")
     ap.add_argument("--shard", default=None, help="grade only share i of n of the folder, e.g. 2/8")
-    ap.add_argument("--memory-mb", type=int, default=None, help="memory cap of one submission's processes")
+    ap.add_argument("--memory-mb", type=int, default=None, help="memory cap of one submission's processes "
+                                                                "(default 2048)")
+    ap.add_argument("--judge-timeout", type=float, default=None, help="time to check one answer in s (default 20)")
     ap.add_argument("--no-sandbox", action="store_true", help="run without bubblewrap (trusted work only)")
     return ap
 
@@ -545,7 +547,11 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     if len(args.folder) != 1:
         ap.error("give one folder of submissions")
-    caps = Caps() if args.memory_mb is None else Caps(memory=args.memory_mb * 2 ** 20)
+    caps = Caps()
+    if args.memory_mb is not None:
+        caps = replace(caps, memory=args.memory_mb * 2 ** 20)
+    if args.judge_timeout is not None:
+        caps = replace(caps, judge_seconds=args.judge_timeout)
     try:
         roster = read_roster(args.roster) if args.roster else None
         if not Path(args.folder[0]).is_dir():

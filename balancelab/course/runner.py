@@ -41,6 +41,8 @@ from .sandbox import limited, sandbox_command
 
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "main"]
 
+#: Largest export (bytes of answer data after one cell).
+EXPORT_CAP = 4 * 2 ** 20
 #: Seconds a cell may keep running after the interrupt at its time limit.
 INTERRUPT_GRACE = 2.0
 #: The encoder's source, read once when this module is imported (the code that is running).
@@ -96,6 +98,12 @@ def export_source(variables: list[str], nonce: str) -> str:
             "    _c = getattr(_s.modules.get('balancelab.course.check.core'), 'ATTEMPTS', None)\n"
             "    if type(_c) is dict:\n"
             "        _d['__attempts__'] = {str(k): v for k, v in _c.items() if type(v) is int}\n"
+            "    try:\n"
+            "        _o = __import__('os')\n"
+            "        _d['__fs__'] = {_p: 1 - _t.f_bavail / _t.f_blocks for _p in ('/tmp', '/dev/shm', '/home/student')\n"
+            "                        for _t in [_o.statvfs(_p)] if _t.f_blocks}\n"
+            "    except Exception:\n"
+            "        pass\n"
             f"    type(_s.stdout).write(_s.stdout, {nonce!r} + ' ' + _bl_ser(_d) + '\\n')\n"
             "try:\n"
             "    _bl_export(globals())\n"
@@ -148,6 +156,10 @@ def _client_class(budget: int):
         def process_message(self, msg, cell, cell_index):
             if msg.get("msg_type") not in ("status", "execute_input"):
                 size = len(repr(msg.get("content", "")))
+                if cell.get("metadata", {}).get("export"):   # the export has a budget of its own
+                    if size + sum(len(str(o.get("text", ""))) for o in cell.get("outputs", [])) > EXPORT_CAP:
+                        return None
+                    return super().process_message(msg, cell, cell_index)
                 if self.kept + size > budget:
                     self.dropped += size
                     return None
@@ -241,7 +253,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     client = _client_class(caps.output)(nb, km=km, timeout=cell_timeout, allow_errors=True,
                                         interrupt_on_timeout=True, shutdown_kernel="immediate",
                                         startup_timeout=120)
-    answers, errors, notes, status = {}, [], [], "graded"
+    answers, errors, notes, status, full = {}, [], [], "graded", {}
     if not cgroup.dirs:
         notes.append("caps: the memory of the process tree and the process count are enforced per process "
                      "only (no cgroup here)")
@@ -253,7 +265,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
                 if cell.cell_type != "code":
                     continue
                 nonce = secrets.token_hex(16)
-                probe = nbformat.v4.new_code_cell(export_source(variables, nonce))
+                probe = nbformat.v4.new_code_cell(export_source(variables, nonce), metadata={"export": True})
                 try:
                     nb.cells[0] = cell
                     client.execute_cell(cell, 0)
@@ -275,8 +287,17 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
                     notes.append(f"the kernel died in cell {i}" + (f" at the {' and '.join(hit)} cap" if hit else "")
                                  + "; the answers given before it are graded")
                     break
+                except Exception as e:  # the kernel sent what the runner cannot read (a patched kernel)
+                    status = "error"
+                    notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
+                                 "the answers given before it are graded")
+                    break
                 found = _exported(probe, nonce)
                 if found is not None:
+                    fs = found.pop("__fs__", None)
+                    for p, used in (fs.items() if isinstance(fs, dict) else []):
+                        if isinstance(used, float) and used > full.get(p, 0.0):
+                            full[p] = used
                     answers = found
     finally:
         peak, hits = cgroup.peak(), cgroup.hits()
@@ -290,16 +311,21 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         hits.append("output")
         notes.append(f"output cap: {client.dropped / 2 ** 20:.1f} MB of output beyond {caps.output / 2 ** 20:g} MB "
                      "were dropped")
-    for h in hits:
-        if h != "output":
-            notes.append(f"{h} cap ({caps.memory // 2 ** 20} MB)" if h == "memory" else
-                         f"{h} cap ({caps.processes} at once) reached")
+    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
+    for p, used in sorted(full.items()):
+        if used >= 0.98 and p in sizes:
+            hits.append(p)
+            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
+    if "memory" in hits:
+        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
+    if "processes" in hits:
+        notes.append(f"the process cap ({caps.processes} at once) was reached")
     return dict(status=status, answers=answers, attempts=attempts if isinstance(attempts, dict) else {},
                 errors=errors, notes=notes, peak=peak, hits=hits)
 
 
-class _Alarm(Exception):
-    pass
+class _Alarm(BaseException):
+    """A judge ran past its time (a BaseException: the judges' own ``except Exception`` lets it through)."""
 
 
 def _on_alarm(signum, frame):
