@@ -38,6 +38,8 @@ def graded(tmp_path_factory):
     (sub / "dave_lab2.ipynb").write_text("{not json")
     _write(sub, "erin_lab2.ipynb", submission_notebook("lab2", K_LAMP("erin"), "import os\nos._exit(1)"))
     _write(sub, "frank_notes.ipynb", submission_notebook("", "x = 1"))
+    _write(sub, "hank_lab2.ipynb", submission_notebook("lab2", "for k in (100.0, 150.0, 200.0):\n    check('2.1', k)",
+                                                       "check('2.3', 1.0)\ncheck('9.9', 1.0)"))
     _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", personal_r_c("gina"), "m_equivalent = (0.72, 0.48)"))
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
     out = sub.parent / "grades.csv"
@@ -52,8 +54,8 @@ def graded(tmp_path_factory):
 def test_command_succeeds_and_prints_summary(graded):
     proc, rows, _, _ = graded
     assert proc.returncode == 0, proc.stderr
-    assert "student" in proc.stdout and "7 notebooks" in proc.stdout
-    assert len(rows) == 7
+    assert "student" in proc.stdout and "8 notebooks" in proc.stdout
+    assert len(rows) == 8
 
 
 def test_full_marks_for_right_answers(graded):
@@ -125,3 +127,16 @@ def test_missing_folder_is_a_clear_error(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(tmp_path / "nope")],
                           capture_output=True, text=True, cwd=ROOT)
     assert proc.returncode == 2 and "no such folder" in proc.stderr
+
+
+def test_check_attempts_are_reported_per_task(graded):
+    _, rows, _, _ = graded
+    assert rows["hank_lab2"]["attempts"] == "2.1:3 2.3:1"  # an unknown task is not counted
+    assert rows["alice_lab2"]["attempts"] == ""
+
+
+def test_rows_record_wall_time_and_peak_memory(graded):
+    _, rows, _, _ = graded
+    a = rows["alice_lab2"]
+    assert 0 < float(a["seconds"]) < 600 and float(a["peak_mb"]) > 10
+    assert rows["dave_lab2"]["seconds"] == ""  # nothing was run for a malformed notebook

@@ -60,11 +60,15 @@ assert arm_design.balance_report().balanced
 """
 SYMBOLS = "import sympy as sp\nm, r, m_l, m_c = sp.symbols('m r m_l m_c', positive=True)\n"
 #: What a submission looks for outside its sandbox (each found path is an error in its row).
-SNOOP = """import balancelab, os, pathlib
+SNOOP = """import balancelab, os, pathlib, sys
 root = pathlib.Path(balancelab.__file__).resolve().parents[1]
 seen = [str(p) for p in [root / "labs" / "solutions", root / "labs", root / "tests", root / "book", root / ".git",
-        pathlib.Path({sub!r}), pathlib.Path({home!r}), pathlib.Path("/root"), pathlib.Path({host!r}),
-        pathlib.Path("/etc/os-release"), pathlib.Path("/work/main")] if p.exists()]
+        pathlib.Path({sub!r}), pathlib.Path({home!r}), pathlib.Path({host!r}),
+        pathlib.Path("/etc/os-release"), pathlib.Path("/etc/passwd"), pathlib.Path("/work/main")] if p.exists()]
+# the grader's real home: at most the folders that lead to this Python (when it lives there)
+real = pathlib.Path({real_home!r})
+if real.is_dir():
+    seen += [str(p) for p in real.iterdir() if not sys.base_prefix.startswith(str(p) + "/")]
 if seen:
     raise RuntimeError("SAW " + " ".join(seen))"""
 SOCKETS = """import socket
@@ -109,12 +113,11 @@ json.dumps = lambda *a, **k: '{"k_lamp": {"num": "%r"}}' % right
 _print = builtins.print
 builtins.print = lambda *a, **k: _print('{"k_lamp": {"num": "%r"}}' % right)
 k_lamp = 12.0"""
-MEMORY_BOMB = """import subprocess, sys, time
-grow = "import time\\nx = []\\nfor _ in range(12):\\n    x.append(b'1' * (50 * 2 ** 20))\\ntime.sleep(30)"
-ps = [subprocess.Popen([sys.executable, "-c", grow]) for _ in range(3)]
-end = time.monotonic() + 7
-while time.monotonic() < end and any(p.poll() is None for p in ps):
-    time.sleep(0.2)"""
+MEMORY_BOMB = """import subprocess, sys
+keep = b"1" * (450 * 2 ** 20)
+grow = "x = b'1' * (700 * 2 ** 20)\\nprint('allocated', flush=True)\\nimport time\\ntime.sleep(30)"
+child = subprocess.Popen([sys.executable, "-c", grow], stdout=subprocess.PIPE)
+said = child.stdout.readline()"""
 #: Answers whose data (not the kernel) stall a judge: sympy text that builds an enormous Float.
 JUDGE_STALL = """import sympy as sp
 class Evil(sp.Symbol):
@@ -235,7 +238,8 @@ def _submissions(sub: Path, host: Path, sock: _HostSocket, home: Path) -> None:
         "hugejudge_lab2": submission_notebook("lab2", JUDGE_STALL.format(text="Float('1e999999999')")),
         "precisejudge_lab2": submission_notebook("lab2", JUDGE_STALL.format(text="Float('1.5', 100000000)")),
         # item 1: what the sandbox must not show
-        "snoop_lab2": submission_notebook("lab2", SNOOP.format(sub=str(sub), home=str(home), host=str(host)),
+        "snoop_lab2": submission_notebook("lab2", SNOOP.format(sub=str(sub), home=str(home), host=str(host),
+                                                            real_home=os.path.expanduser("~")),
                           SOCKETS.format(sock=sock.path, abstract=sock.abstract, secret=SECRET), K_LAMP("snoop")),
         # item 3: forged reports, a killed runner, fake answer files, patched print and json.dumps
         "forger_lab2": submission_notebook("lab2", FORGER),
@@ -401,7 +405,7 @@ def test_without_the_sandbox_the_grader_warns_and_still_grades(tmp_path):
         r = run_limited([sys.executable, "-c", "print(7)"], tmp_path, 60, sandbox=False)
     assert r.stdout == "7\n" and not r.sandboxed
     path = tmp_path / "amy_lab2.ipynb"
-    nbformat.write(submission_notebook("lab2", K_LAMP), path)
+    nbformat.write(submission_notebook("lab2", K_LAMP("amy")), path)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # grade_notebook notes it in the row instead of warning per notebook
         row = grade_notebook(path, sandbox=False, cell_timeout=30, notebook_timeout=120)

@@ -58,7 +58,7 @@ from .caps import Caps, Cgroup
 from .gradetable import GradeRow, RowWriter, excerpt, merge_csv, read_csv, summary, write_csv
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
                      resolve_lab)
-from .sandbox import NO_SANDBOX_WARNING, limited, sandbox_available
+from .sandbox import NO_SANDBOX_WARNING, sandbox_available
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
            "grade_folder", "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
@@ -202,46 +202,87 @@ def _kill(proc: subprocess.Popen) -> None:
         pass
 
 
+_CTX = None
+_CTX_LOCK = threading.Lock()
+
+
+def _context():
+    """A forkserver that imported the runner, the checks and nbclient once: each runner is forked from it."""
+    global _CTX
+    with _CTX_LOCK:
+        if _CTX is None:
+            import multiprocessing
+
+            ctx = multiprocessing.get_context("forkserver")
+            ctx.set_forkserver_preload(["balancelab.course.runner", "balancelab.course.check", "nbclient",
+                                        "jupyter_client.manager", "nbformat"])
+            _CTX = ctx
+        return _CTX
+
+
+class _Forked:
+    """A forked runner seen like a Popen (pid, kill, returncode) for :func:`_stop`."""
+
+    def __init__(self, process):
+        self.process, self.pid = process, process.pid
+
+
+def _forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, int | None]:
+    """Grade one notebook in a runner forked from the warm server; report lines and how it ended."""
+    from .runner import serve
+
+    ctx = _context()
+    recv, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=serve, args=(job, send, cpu), daemon=False)
+    proc.start()
+    send.close()
+    handle = _Forked(proc)
+    with _ACTIVE_LOCK:
+        _ACTIVE[proc.pid] = (handle, Path(job["scratch"]), Cgroup.attach(job.get("cgroup", {})))
+    lines, ended, deadline = [], "", time.monotonic() + wall
+    try:
+        while True:
+            left = deadline - time.monotonic()
+            if left <= 0:
+                ended = f"the grading of this notebook ran past its {wall:g} s limit and was stopped"
+                break
+            if recv.poll(min(left, 1.0)):
+                try:
+                    data = recv.recv_bytes(maxlength=64 * 2 ** 20)
+                except (EOFError, OSError):
+                    break
+                try:
+                    obj = json.loads(data)
+                except ValueError:
+                    continue
+                if isinstance(obj, dict):
+                    lines.append(obj)
+                    if obj.get("done"):
+                        break
+            elif not proc.is_alive() and not recv.poll(0):
+                break
+    finally:
+        _kill(handle)
+        proc.join(10)
+        recv.close()
+        with _ACTIVE_LOCK:
+            _ACTIVE.pop(proc.pid, None)
+    code = proc.exitcode
+    if not ended and not any(x.get("done") for x in lines) and code:
+        ended = (f"the runner was killed by signal {-code}" if code < 0 else f"the runner exited with code {code}")
+    return lines, ended, code
+
+
 def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps: Caps, sandbox: bool,
             scratch: Path) -> tuple[list[dict], str, Cgroup]:
     """Start the runner for one notebook; its report lines and how it ended."""
     share = scratch / "ipc"
     share.mkdir()
     cgroup = Cgroup(caps)
-    cmd = [sys.executable, "-m", "balancelab.course.runner", str(copy), "--lab", lab, "--student", sid,
-           "--share", str(share), "--cell-timeout", str(cell_timeout), "--caps", json.dumps(asdict(caps)),
-           "--cgroup", json.dumps({k: str(v) for k, v in cgroup.dirs.items()})]
-    cmd += [] if sandbox else ["--no-sandbox"]
-    env = {k: v for k, v in os.environ.items() if not k.startswith(("JPY_", "JUPYTER_"))}
-    env.update(PYTHONUNBUFFERED="1", JUPYTER_RUNTIME_DIR=str(scratch / "runtime"), MPLBACKEND="Agg",
-               JUPYTER_PLATFORM_DIRS="1", IPYTHONDIR=str(scratch / "ipython"))
-    proc = subprocess.Popen(limited(cmd, int(wall) + 30, caps.file_size, caps.runner_memory), cwd=str(scratch),
-                            env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL, start_new_session=True)
-    with _ACTIVE_LOCK:
-        _ACTIVE[proc.pid] = (proc, scratch, cgroup)
-    ended = ""
-    try:
-        out, _ = proc.communicate(timeout=wall)
-    except subprocess.TimeoutExpired:
-        _kill(proc)
-        out, _ = proc.communicate()
-        ended = f"the grading of this notebook ran past its {wall:g} s limit and was stopped"
-    finally:
-        _kill(proc)
-        with _ACTIVE_LOCK:
-            _ACTIVE.pop(proc.pid, None)
-    if not ended and proc.returncode:
-        ended = (f"the runner was killed by signal {-proc.returncode}" if proc.returncode < 0
-                 else f"the runner exited with code {proc.returncode}")
-    lines = []
-    for line in out.decode("utf-8", "replace").splitlines():
-        try:
-            obj = json.loads(line)
-        except ValueError:
-            continue
-        if isinstance(obj, dict):
-            lines.append(obj)
+    job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
+               caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
+               scratch=str(scratch))
+    lines, ended, _ = _forked_runner(job, wall, int(wall) + 30)
     return lines, ended, cgroup
 
 

@@ -37,9 +37,13 @@ from pathlib import Path
 
 from .caps import Caps, Cgroup
 from .check.data import encode_answer
-from .sandbox import limited, sandbox_command
+from .gradetable import excerpt
+from .sandbox import SHARE, WORK, limited, sandbox_command
 
-__all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "main"]
+__all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
+
+# jsonschema (imported by nbformat) builds an IRI grammar for 4 s on import; nothing here validates an IRI
+sys.modules.setdefault("rfc3987_syntax", None)
 
 #: Largest export (bytes of answer data after one cell).
 EXPORT_CAP = 4 * 2 ** 20
@@ -119,13 +123,14 @@ def _kernel_manager_class():
         """A kernel started inside the sandbox, reached over unix sockets in ``share``."""
 
         def setup(self, share: Path, caps: Caps, cgroup: Cgroup, sandbox: bool) -> None:
-            self.transport, self.ip = "ipc", str(share / "k")
+            # relative socket paths (this process works in ``share``): a unix socket path has at most 107 bytes
+            self.transport, self.ip, self.sandboxed = "ipc", "k", sandbox
             self.connection_file = str(share / "kernel.json")
             kernel = [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}",
-                      "--HistoryManager.enabled=False", "--IPKernelApp.trio_loop=False"]
+                      "--HistoryManager.enabled=False"]
             env = {"MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1", "PYTHONNOUSERSITE": "1",
-                   "IPYTHONDIR": "/home/student/.ipython", "MPLCONFIGDIR": "/home/student/.mpl",
-                   "JUPYTER_RUNTIME_DIR": "/home/student/.runtime", "PYDEVD_DISABLE_FILE_VALIDATION": "1"}
+                   "IPYTHONDIR": f"{WORK}/.ipython", "MPLCONFIGDIR": f"{WORK}/.mpl",
+                   "JUPYTER_RUNTIME_DIR": f"{WORK}/.runtime", "PYDEVD_DISABLE_FILE_VALIDATION": "1"}
             cpu = 24 * 3600
             if sandbox:
                 inner = limited(kernel, cpu, caps.file_size, caps.memory, caps.processes)
@@ -136,7 +141,13 @@ def _kernel_manager_class():
                                            interrupt_mode="message", env={} if sandbox else env)
 
         def format_kernel_cmd(self, extra_arguments=None):
-            return [a.replace("{connection_file}", self.connection_file) for a in self.kernel_spec.argv]
+            conn = self.connection_file
+            if self.sandboxed:  # the kernel's copy names its sockets where it sees the folder
+                info = json.loads(Path(conn).read_text())
+                info["ip"] = f"{SHARE}/k"
+                Path(conn).with_name("kernel-sandbox.json").write_text(json.dumps(info))
+                conn = f"{SHARE}/kernel-sandbox.json"
+            return [a.replace("{connection_file}", conn) for a in self.kernel_spec.argv]
 
     return SandboxKernelManager
 
@@ -243,7 +254,8 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
 
     global SandboxKernelManager
     SandboxKernelManager = SandboxKernelManager or _kernel_manager_class()
-    caps, share = caps or Caps(), Path(share)
+    caps, share, path = caps or Caps(), Path(share).resolve(), Path(path).resolve()
+    os.chdir(share)
     nb = nbformat.read(path, as_version=4)
     cells = [c for c in nb.cells]
     nb.cells = [nbformat.v4.new_code_cell("")]
@@ -269,8 +281,9 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
                 try:
                     nb.cells[0] = cell
                     client.execute_cell(cell, 0)
-                    errors += [f"cell {i}: {o.get('ename')}"[:80] for o in cell.get("outputs", [])
-                               if o.get("output_type") == "error"][:5]
+                    errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
+                               + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
+                               for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
                     cell.outputs = []
                     nb.cells[0] = probe
                     client.execute_cell(probe, 0)
@@ -324,16 +337,56 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
                 errors=errors, notes=notes, peak=peak, hits=hits)
 
 
-class _Alarm(BaseException):
-    """A judge ran past its time (a BaseException: the judges' own ``except Exception`` lets it through)."""
+def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
+    """One task's verdict, computed in a forked child that is killed at ``seconds`` (a judge stuck in
+    compiled code, which no alarm interrupts, or one that runs out of memory, costs only its task)."""
+    from . import check as _check
 
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: judge, write the verdict, leave without cleaning up the parent's state
+        code = 0
+        try:
+            os.close(r)
+            signal.setitimer(signal.ITIMER_REAL, seconds)
+            v = _check.check_data(task_id, data, student)
+            os.write(w, json.dumps(dict(correct=bool(v.correct), message=v.message, score=float(v.score))).encode())
+        except MemoryError:
+            code = 3
+        except BaseException:
+            code = 4
+        finally:
+            os._exit(code)
+    os.close(w)
+    chunks, deadline = [], time.monotonic() + seconds + 1.0
+    import select
 
-def _on_alarm(signum, frame):
-    raise _Alarm()
+    while (left := deadline - time.monotonic()) > 0:
+        ready, _, _ = select.select([r], [], [], left)
+        if not ready:
+            break
+        chunk = os.read(r, 1 << 16)
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(r)
+    try:
+        os.kill(pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    _, status = os.waitpid(pid, 0)
+    try:
+        return json.loads(b"".join(chunks))
+    except ValueError:
+        code = os.WEXITSTATUS(status) if os.WIFEXITED(status) else None
+        if code == 3:
+            return dict(correct=False, score=0.0, message="the answer needed more memory than the checker "
+                                                          "allows: not graded")
+        return dict(correct=False, score=0.0, message=f"the answer took more than {seconds:g} s to check: not graded")
 
 
 def judge_tasks(answers: dict, lab: str, student: str, seconds: float, report) -> None:
-    """Judge every task of ``lab`` on the exported data, each under a time limit; ``report(dict)`` each.
+    """Judge every task of ``lab`` on the exported data, each in a child stopped at ``seconds``.
 
     Parameters
     ----------
@@ -357,28 +410,17 @@ def judge_tasks(answers: dict, lab: str, student: str, seconds: float, report) -
     """
     from . import check as _check
 
-    old = signal.signal(signal.SIGALRM, _on_alarm)
-    try:
-        for t in _check.tasks(lab):
-            row = dict(id=t.id, score=0.0, points=float(t.points), correct=False)
-            if not isinstance(answers, dict) or t.variable not in answers:
-                report({**row, "message": f"no answer: variable `{t.variable}` is not defined"})
-                continue
-            signal.setitimer(signal.ITIMER_REAL, seconds)
-            try:
-                v = _check.check_data(t.id, answers[t.variable], student)
-                ok = bool(v.correct)
-                row.update(correct=ok, message=v.message,
-                           score=min(max(float(v.score), 0.0), float(t.points)) if ok else 0.0)
-            except _Alarm:
-                row["message"] = f"the answer took more than {seconds:g} s to check: not graded"
-            except MemoryError:
-                row["message"] = "the answer needed more memory than the checker allows: not graded"
-            finally:
-                signal.setitimer(signal.ITIMER_REAL, 0)
-            report(row)
-    finally:
-        signal.signal(signal.SIGALRM, old)
+    for t in _check.tasks(lab):
+        row = dict(id=t.id, score=0.0, points=float(t.points), correct=False)
+        if not isinstance(answers, dict) or t.variable not in answers:
+            report({**row, "message": f"no answer: variable `{t.variable}` is not defined"})
+            continue
+        v = _judge_one(t.id, answers[t.variable], student, seconds)
+        ok = v.get("correct") is True
+        score = v.get("score") if isinstance(v.get("score"), float) else 0.0
+        row.update(correct=ok, message=str(v.get("message", "")),
+                   score=min(max(score, 0.0), float(t.points)) if ok else 0.0)
+        report(row)
 
 
 def _die_with_parent() -> None:
@@ -401,6 +443,61 @@ def _private_channel():
     out = os.fdopen(fd, "w", encoding="utf-8")
     sys.stdout = sys.stderr = open(os.devnull, "w")
     return out
+
+
+def _grade(job: dict, emit) -> None:
+    """Run and judge one notebook (``job``: the command line's options as a dict), reporting by ``emit``."""
+    from . import check as _check  # the grader's own checks
+
+    caps = Caps(**job.get("caps", {}))
+    variables = [t.variable for t in _check.tasks(job["lab"])] + ["STUDENT_ID"]
+    start = time.monotonic()
+    try:
+        res = run_notebook(job["notebook"], variables, job["share"], int(job.get("cell_timeout", 60)), caps,
+                           not job.get("no_sandbox", False), Cgroup.attach(job.get("cgroup", {})))
+    except Exception as e:  # the kernel could not start, the notebook could not be read
+        res = dict(status="error", answers={}, attempts={}, errors=[], peak=None, hits=[],
+                   notes=[f"the notebook could not be run ({type(e).__name__})"])
+    res["seconds"] = round(time.monotonic() - start, 2)
+    answers = res.pop("answers")
+    declared = answers.pop("STUDENT_ID", None) if isinstance(answers, dict) else None
+    res["declared"] = declared.get("str") if isinstance(declared, dict) and isinstance(declared.get("str"), str) \
+        else None if declared is None else "(not a string)"
+    emit({"run": res})
+    judge_tasks(answers, job["lab"], job.get("student", ""), caps.judge_seconds, lambda row: emit({"task": row}))
+    emit({"done": True})
+
+
+def serve(job: dict, conn, cpu_seconds: int) -> None:
+    """The runner forked from a pre-imported server (:mod:`multiprocessing` forkserver): limits itself,
+    grades ``job`` and sends each report line on ``conn`` (the only channel to the grader).
+
+    Parameters
+    ----------
+    job : dict
+        As :func:`main`'s options.
+    conn : multiprocessing.connection.Connection
+        Write end of a pipe to the grader.
+    cpu_seconds : int
+        CPU limit of this process.
+    """
+    import resource
+
+    os.setsid()
+    _die_with_parent()
+    caps = Caps(**job.get("caps", {}))
+    for name, value in (("RLIMIT_AS", caps.runner_memory), ("RLIMIT_CPU", cpu_seconds),
+                        ("RLIMIT_FSIZE", caps.file_size), ("RLIMIT_CORE", 0)):
+        try:
+            resource.setrlimit(getattr(resource, name), (value, value))
+        except (ValueError, OSError):
+            pass
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, 1)
+    os.dup2(null, 2)
+    os.close(null)
+    _grade(job, lambda obj: conn.send_bytes(json.dumps(obj).encode()))
+    conn.close()
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -427,32 +524,14 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     out = _private_channel()
     _die_with_parent()
-    # jsonschema (imported by nbformat) builds an IRI grammar for 4 s on import; no IRI is validated here
-    sys.modules.setdefault("rfc3987_syntax", None)
-    caps = Caps(**json.loads(args.caps))
 
     def emit(obj):
         out.write(json.dumps(obj) + "\n")
         out.flush()
 
-    from . import check as _check  # the grader's own checks, imported before the kernel starts
-
-    variables = [t.variable for t in _check.tasks(args.lab)] + ["STUDENT_ID"]
-    start = time.monotonic()
-    try:
-        res = run_notebook(args.notebook, variables, args.share, args.cell_timeout, caps, not args.no_sandbox,
-                           Cgroup.attach(json.loads(args.cgroup)))
-    except Exception as e:  # the kernel could not start, the notebook could not be read
-        res = dict(status="error", answers={}, attempts={}, errors=[], peak=None, hits=[],
-                   notes=[f"the notebook could not be run ({type(e).__name__})"])
-    res["seconds"] = round(time.monotonic() - start, 2)
-    answers = res.pop("answers")
-    declared = answers.pop("STUDENT_ID", None) if isinstance(answers, dict) else None
-    res["declared"] = declared.get("str") if isinstance(declared, dict) and isinstance(declared.get("str"), str) \
-        else None if declared is None else "(not a string)"
-    emit({"run": res})
-    judge_tasks(answers, args.lab, args.student, caps.judge_seconds, lambda row: emit({"task": row}))
-    emit({"done": True})
+    _grade(dict(notebook=args.notebook, lab=args.lab, student=args.student, share=args.share,
+                cell_timeout=args.cell_timeout, caps=json.loads(args.caps), cgroup=json.loads(args.cgroup),
+                no_sandbox=args.no_sandbox), emit)
     return 0
 
 

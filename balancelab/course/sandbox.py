@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited",
-           "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK"]
+           "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK", "SHARE"]
 
 NO_SANDBOX_WARNING = ("no sandbox: bubblewrap (bwrap) is missing, does not work here or was turned off, so "
                       "submissions run as the grader's user with resource limits only and can read and write the grader's files; install it "
@@ -77,16 +77,18 @@ def sandbox_available() -> bool:
 
 
 def _python_roots() -> list[str]:
-    """Folders this Python needs: its prefixes and the folders on its import path, minus any
-    folder that holds this checkout (an editable install's repository root would show the
-    solutions, tests and book: only the package folder itself is bound, see :func:`kernel_binds`)."""
+    """Folders this Python needs: its prefixes and the folders on its import path, minus the
+    checkout (an editable install's repository root would show the solutions, tests and book:
+    only the package folder itself is bound, see :func:`kernel_binds`)."""
     checkout = Path(__file__).resolve().parents[2]
     found = set()
-    for entry in [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix, *sys.path]:
+    prefixes = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
+    for entry in prefixes + list(sys.path):
         if not entry:
             continue
         path = Path(entry).resolve()
-        if not path.is_dir() or path == Path("/") or path == checkout or path in checkout.parents:
+        inside = path == checkout or checkout in path.parents or path in checkout.parents
+        if not path.is_dir() or path == Path("/") or (inside and entry not in prefixes) or path == checkout:
             continue
         found.add(path)
     outer = [p for p in found if not any(q in p.parents for q in found)]
@@ -136,6 +138,9 @@ def kernel_binds() -> list[str]:
 
 #: The sandbox's working folder and home (a tmpfs of its own).
 WORK = "/home/student"
+#: Where the shared folder (the kernel's sockets) appears inside the sandbox (a short path: a unix
+#: socket's path has at most 107 bytes).
+SHARE = "/run/balancelab"
 
 
 def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
@@ -153,7 +158,7 @@ def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
     cmd : list of str
         The command.
     share : str or Path, optional
-        A host folder bound read-write at the same path (the kernel's sockets).
+        A host folder bound read-write at :data:`SHARE` (the kernel's sockets).
     caps : Caps, optional
         Sizes of the in-memory folders (:class:`~balancelab.course.caps.Caps`).
     env : dict, optional
@@ -174,12 +179,11 @@ def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
     env = {"PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": WORK, "LANG": "C.UTF-8", **(env or {})}
     shared = []
     if share is not None:
-        share = str(Path(share).resolve())
-        shared = ["--bind", share, share]
+        shared = ["--bind", str(Path(share).resolve()), SHARE]
     setenv = [x for k, v in env.items() for x in ("--setenv", k, str(v))]
-    return [bwrap_path() or "bwrap", *kernel_binds(), "--dev", "/dev", "--proc", "/proc",
+    return [bwrap_path() or "bwrap", "--dev", "/dev", "--proc", "/proc",
             "--size", str(caps.tmp), "--tmpfs", "/tmp", "--size", str(caps.shm), "--tmpfs", "/dev/shm",
-            "--size", str(caps.work), "--tmpfs", WORK, *shared,
+            "--size", str(caps.work), "--tmpfs", WORK, *kernel_binds(), *shared,
             "--unshare-all", "--unshare-user", "--uid", "65534", "--gid", "65534", "--hostname", "sandbox",
             "--cap-drop", "ALL", "--die-with-parent", "--new-session", "--clearenv", *setenv,
             "--chdir", WORK, "--"] + list(cmd)
@@ -275,7 +279,7 @@ def run_limited(cmd: list[str], scratch: str | Path, timeout: float, env: dict |
     if not use:
         warnings.warn(NO_SANDBOX_WARNING, RuntimeWarning, stacklevel=2)
     lim = limited(cmd, int(timeout) + 30)
-    full = sandbox_command(lim, scratch, env=env) if use else lim
+    full = sandbox_command(lim, env=env) if use else lim
     proc = subprocess.Popen(full, cwd=str(scratch), env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, start_new_session=True, text=True, errors="replace")
     timed_out = False
