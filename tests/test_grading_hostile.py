@@ -279,7 +279,9 @@ def graded(tmp_path_factory):
         _submissions(sub, host, sock, home)
         before_sub, before_host = _digest(sub), _digest(host)
         out = base / "grades.csv"
-        env = {**os.environ, "HOME": str(home), "H18_SECRET": SECRET}
+        scratch = base / "scratch"
+        scratch.mkdir()
+        env = {**os.environ, "HOME": str(home), "H18_SECRET": SECRET, "BALANCELAB_SCRATCH": str(scratch)}
         started = time.monotonic()
         proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
                                "--cell-timeout", "10", "--notebook-timeout", "120", "--jobs", "2",
@@ -291,7 +293,7 @@ def graded(tmp_path_factory):
     raw = list(csv.reader(out.open(encoding="utf-8"))) if out.exists() else []
     rows = {r["student"].lstrip("'"): r for r in csv.DictReader(out.open(encoding="utf-8"))} if out.exists() else {}
     return dict(proc=proc, rows=rows, raw=raw, sub=sub, host=host, before_sub=before_sub, before_host=before_host,
-                connections=len(sock.connections), elapsed=elapsed, started=started)
+                connections=len(sock.connections), elapsed=elapsed, started=started, scratch=scratch)
 
 
 def _scores(row, lab):
@@ -356,9 +358,7 @@ def test_the_host_is_untouched(graded):
 
 
 def test_no_scratch_folder_is_left(graded):
-    left = [p for p in Path(os.environ.get("TMPDIR", "/tmp")).glob("balancelab-grade-*")
-            if p.stat().st_mtime >= graded["sub"].stat().st_mtime]
-    assert left == []
+    assert list(graded["scratch"].iterdir()) == []
 
 
 def test_lab_sources_are_compared():
@@ -530,15 +530,28 @@ def test_every_row_records_wall_time_and_memory(graded):
 
 
 def test_a_runner_that_dies_gives_error_and_zero(tmp_path):
-    """Item 3: a runner that cannot finish (here: too little memory to start) never gives a grade."""
-    from balancelab.course.caps import Caps
-    from balancelab.course.grading import grade_notebook
+    """Item 3: a runner killed before it reports (here by the test, as the kernel cannot) gives no grade."""
+    import signal
 
+    from balancelab.course import grading
+
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
     path = tmp_path / "amy_lab2.ipynb"
-    nbformat.write(submission_notebook("lab2", K_LAMP("amy")), path)
-    row = grade_notebook(path, cell_timeout=20, notebook_timeout=60, caps=Caps(runner_memory=40 * 2 ** 20))
+    nbformat.write(submission_notebook("lab2", K_LAMP("amy"), "import time\ntime.sleep(120)"), path)
+    rows = []
+    worker = threading.Thread(target=lambda: rows.append(grading.grade_notebook(path, cell_timeout=200,
+                                                                                 notebook_timeout=300)))
+    worker.start()
+    assert _wait(lambda: bool(grading._ACTIVE), 120)
+    time.sleep(15)  # the first answer has been exported by now (the kernel sleeps in the next cell)
+    for pid in list(grading._ACTIVE):
+        os.kill(pid, signal.SIGKILL)
+    worker.join(120)
+    row = rows[0]
     assert row.status == "error" and row.total == 0.0, (row.status, row.notes)
-    assert "nothing was graded" in row.notes and "Kernel" not in row.notes
+    assert "the runner was killed by signal 9: nothing was graded (0 points)" in row.notes
+    assert "Kernel" not in row.notes
 
 
 def _wait(condition, timeout: float) -> bool:
@@ -614,3 +627,16 @@ def test_identity_comes_from_the_roster(tmp_path):
     assert malice["1.1"] == "0" and "declares STUDENT_ID 'alice' but is 'm77''s (roster)" in malice["notes"]
     nobody = rows["nobody_lab1"]
     assert "no student id (not in the roster)" in nobody["notes"] and nobody["1.1"] == "1"
+
+
+def test_no_lab_answer_in_a_docstring_of_the_package(tmp_path):
+    """Item 6: no number in a docstring of the installed package passes a numeric task; the scan
+    the hand-out runs finds one that does."""
+    import balancelab
+    from balancelab.course.labtools import answer_leaks
+    from balancelab.methods.lecture import single_link_spring
+
+    assert answer_leaks(Path(balancelab.__file__).parent) == []
+    right = round(single_link_spring(1.5, 0.4, 0.25, 0.12).parameters["k"], 3)
+    (tmp_path / "leaky.py").write_text(f"def f():\n    '''>>> f()\n    {right}\n    '''\n", encoding="utf-8")
+    assert [x.split(":")[0] for x in answer_leaks(tmp_path)] == ["task 2.1"]

@@ -397,7 +397,7 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     if not sid:
         notes.append(f"no student id ({how}): judged with the published numbers")
     declared = extra.get("declared")
-    if declared is not None and declared != sid:
+    if declared and declared != sid:
         notes.append(f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)} but is "
                      f"{sid!r}'s ({how}): judged with {sid!r}'s numbers" if sid else
                      f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)}: ignored")

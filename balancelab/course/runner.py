@@ -132,11 +132,14 @@ def _kernel_manager_class():
                    "IPYTHONDIR": f"{WORK}/.ipython", "MPLCONFIGDIR": f"{WORK}/.mpl",
                    "JUPYTER_RUNTIME_DIR": f"{WORK}/.runtime", "PYDEVD_DISABLE_FILE_VALIDATION": "1"}
             cpu = 24 * 3600
+            # with a cgroup the tree's memory is capped there; a process's address space (libraries and
+            # thread arenas reserve far more than they use) then only needs a loose limit
+            space = 4 * caps.memory if cgroup.dirs else caps.memory
             if sandbox:
-                inner = limited(kernel, cpu, caps.file_size, caps.memory, caps.processes)
+                inner = limited(kernel, cpu, caps.file_size, space, caps.processes)
                 argv = cgroup.join_command(sandbox_command(inner, share, caps, env))
             else:
-                argv = cgroup.join_command(limited(kernel, cpu, caps.file_size, caps.memory))
+                argv = cgroup.join_command(limited(kernel, cpu, caps.file_size, space))
             self._kernel_spec = KernelSpec(argv=argv, display_name="sandbox", language="python",
                                            interrupt_mode="message", env={} if sandbox else env)
 
@@ -338,8 +341,9 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
 
 
 def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
-    """One task's verdict, computed in a forked child that is killed at ``seconds`` (a judge stuck in
-    compiled code, which no alarm interrupts, or one that runs out of memory, costs only its task)."""
+    """One task's verdict, computed in a forked child that is killed after ``seconds`` of CPU time (a
+    judge stuck in compiled code, which no alarm interrupts, or one that runs out of memory, costs
+    only its task)."""
     from . import check as _check
 
     r, w = os.pipe()
@@ -347,8 +351,11 @@ def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
     if pid == 0:  # the child: judge, write the verdict, leave without cleaning up the parent's state
         code = 0
         try:
+            import resource
+
             os.close(r)
-            signal.setitimer(signal.ITIMER_REAL, seconds)
+            cpu = max(1, int(seconds))  # CPU seconds: a limit that a loaded machine does not shorten
+            resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
             v = _check.check_data(task_id, data, student)
             os.write(w, json.dumps(dict(correct=bool(v.correct), message=v.message, score=float(v.score))).encode())
         except MemoryError:
@@ -358,7 +365,7 @@ def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
         finally:
             os._exit(code)
     os.close(w)
-    chunks, deadline = [], time.monotonic() + seconds + 1.0
+    chunks, deadline = [], time.monotonic() + 4 * seconds + 10.0  # wall: a backstop for a judge that sleeps
     import select
 
     while (left := deadline - time.monotonic()) > 0:
