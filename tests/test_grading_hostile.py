@@ -598,10 +598,15 @@ def test_a_killed_grader_keeps_its_rows_and_leaves_no_scratch_or_process(tmp_pat
     # the runner dies with the grader (and the kernel with the runner)
     assert _wait(lambda: not [p for p in _marked_processes() if mark in p], 30)
     if how == "SIGKILL":  # nothing can run at SIGKILL: the next grader deletes what is left
+        from balancelab.course.caps import Cgroup
         from balancelab.course.grading import clean_stale
 
         clean_stale(scratch)
+        Cgroup.clean_stale()
     assert _scratch_of(proc.pid, scratch) == []
+    from balancelab.course.caps import _parents
+
+    assert [d for p in (_parents() or {}).values() for d in p.glob(f"balancelab-{proc.pid}-*")] == []
 
 
 def test_identity_comes_from_the_roster(tmp_path):

@@ -126,7 +126,7 @@ class Cgroup:
         parents = _parents()
         if not parents:
             return
-        name = f"balancelab-{uuid.uuid4().hex[:12]}"
+        name = f"balancelab-{os.getpid()}-{uuid.uuid4().hex[:12]}"
         try:
             for c, parent in parents.items():
                 d = parent / name
@@ -150,6 +150,25 @@ class Cgroup:
         cg = cls.__new__(cls)
         cg.dirs = {str(k): Path(v) for k, v in dirs.items()}
         return cg
+
+    @staticmethod
+    def clean_stale() -> int:
+        """Remove the cgroups left by graders that no longer run (killed with SIGKILL); how many.
+
+        Examples
+        --------
+        >>> Cgroup.clean_stale() >= 0
+        True
+        """
+        gone = 0
+        for parent in (_parents() or {}).values():
+            for d in parent.glob("balancelab-*"):
+                pid = d.name.split("-")[1]
+                if pid.isdigit() and not Path(f"/proc/{pid}").exists():
+                    cg = Cgroup.attach({"": d})
+                    cg.remove()
+                    gone += 1
+        return gone
 
     def join_command(self, cmd: list[str]) -> list[str]:
         """``cmd`` prefixed by a shell that moves itself into the cgroup first.

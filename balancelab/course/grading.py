@@ -496,6 +496,7 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
     if sandbox is None and not sandbox_available():
         print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
     clean_stale()
+    Cgroup.clean_stale()
     writer = RowWriter(out) if out is not None else None
 
     def one(p):
