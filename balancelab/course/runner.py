@@ -92,8 +92,9 @@ def export_source(variables: list[str], nonce: str) -> str:
     >>> ns, buf = {"answer": 2.5, "other": "x"}, io.StringIO()
     >>> with contextlib.redirect_stdout(buf):
     ...     exec(export_source(["answer", "missing"], "N0NCE"), ns)
-    >>> buf.getvalue().split(" ", 1)
-    ['N0NCE', '{"answer":{"num":"2.5"}}\\n']
+    >>> nonce, line = buf.getvalue().split(" ", 1)
+    >>> nonce, json.loads(line)["answer"], "missing" in json.loads(line)
+    ('N0NCE', {'num': '2.5'}, False)
     """
     return (_ENCODER_SOURCE + _SERIALIZER +
             "def _bl_export(_g):\n"
