@@ -638,7 +638,7 @@ def test_no_lab_answer_in_a_docstring_of_the_package(tmp_path):
     """Item 6: no number in a docstring of the installed package passes a numeric task; the scan
     the hand-out runs finds one that does."""
     import balancelab
-    from balancelab.course.labtools import answer_leaks
+    from balancelab.course.leaks import answer_leaks
     from balancelab.methods.lecture import single_link_spring
 
     assert answer_leaks(Path(balancelab.__file__).parent) == []
