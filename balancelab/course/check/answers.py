@@ -480,7 +480,7 @@ def design_balanced(design: Design, constraints: list[tuple[bool, str]],
     >>> design_balanced(d, [(True, "k above 400 N/m")])[0]
     True
     >>> design_balanced(d, [(False, "k above 400 N/m")])[1]
-    'Your design is balanced; it violates: k above 400 N/m.'
+    'Your design is balanced (energy varies by less than 1e-9 of its scale); it violates: k above 400 N/m.'
     """
     try:
         rep = design.balance_report(n=n, tolerance=tolerance)
@@ -489,7 +489,8 @@ def design_balanced(design: Design, constraints: list[tuple[bool, str]],
     failed = [text for ok, text in constraints if not ok]
     # qualitative on purpose: the verdict is no signal to optimize against (the library's own
     # balance_report gives the variation to whoever designs with it)
-    bal = ("balanced" if rep.balanced
+    spread = "less than 1e-9" if rep.variation < 1e-9 else f"less than the accepted {tolerance:g}"
+    bal = (f"balanced (energy varies by {spread} of its scale)" if rep.balanced
            else f"NOT balanced: its energy varies by more than {tolerance:g} of its scale")
     if rep.balanced and not failed:
         return True, f"Your design is {bal} and meets every constraint.", ""
