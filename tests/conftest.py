@@ -144,3 +144,17 @@ def build_mini_book(tmp_path: Path, body: str, local_extensions: dict | None = N
             f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
             "warningiserror=True, keep_going=True, quiet=True))")
     return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+
+
+def personal_k_lamp(student_id: str) -> str:
+    """Code of a right answer to task 2.1 for ``student_id`` (the grader takes the id from the file name)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"k_lamp = bl.lecture.single_link_spring(**_tn('2.1', {student_id!r})).parameters['k']")
+
+
+def personal_r_c(student_id: str) -> str:
+    """Code of a right answer to task 1.1 for ``student_id``."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_n = _tn('1.1', {student_id!r})\n"
+            "r_c = bl.lecture.single_link_counterweight(_n['mass'], _n['length'], _n['counter_mass'], "
+            "link_mass=_n['link_mass']).parameters['r_c']")

@@ -10,7 +10,7 @@ import pytest
 
 from balancelab.course.check import tasks
 from balancelab.course.grading import GradeRow, grade_namespace, summary, write_csv
-from conftest import submission_notebook
+from conftest import personal_k_lamp, personal_r_c, submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -23,7 +23,7 @@ def _write(folder, name, nb):
     return p
 
 
-K_LAMP = "k_lamp = bl.lecture.single_link_spring(1.5, 0.4, 0.25, 0.12).parameters['k']"
+K_LAMP = personal_k_lamp  # the student's own numbers: the id is the file name's (alice_lab2 -> alice)
 LEVER_SPRING = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
 ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
 
@@ -31,14 +31,16 @@ ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters
 @pytest.fixture(scope="module")
 def graded(tmp_path_factory):
     sub = tmp_path_factory.mktemp("submissions")
-    _write(sub, "alice_lab2.ipynb", submission_notebook("lab2", K_LAMP, ENERGY, LEVER_SPRING))
+    _write(sub, "alice_lab2.ipynb", submission_notebook("lab2", K_LAMP("alice"), ENERGY, LEVER_SPRING))
     _write(sub, "bob_lab2.ipynb", submission_notebook("lab2", "k_lamp = 12.0", "raise NotImplementedError('todo')",
                                       "lever_spring = {'k': 310.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"))
-    _write(sub, "carol_lab2.ipynb", submission_notebook("lab2", K_LAMP, "while True:\n    pass", ENERGY))
+    _write(sub, "carol_lab2.ipynb", submission_notebook("lab2", K_LAMP("carol"), "while True:\n    pass", ENERGY))
     (sub / "dave_lab2.ipynb").write_text("{not json")
-    _write(sub, "erin_lab2.ipynb", submission_notebook("lab2", K_LAMP, "import os\nos._exit(1)"))
+    _write(sub, "erin_lab2.ipynb", submission_notebook("lab2", K_LAMP("erin"), "import os\nos._exit(1)"))
     _write(sub, "frank_notes.ipynb", submission_notebook("", "x = 1"))
-    _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", "r_c = '22.5 cm'", "m_equivalent = (0.72, 0.48)"))
+    _write(sub, "hank_lab2.ipynb", submission_notebook("lab2", "for k in (100.0, 150.0, 200.0):\n    check('2.1', k)",
+                                                       "check('2.3', 1.0)\ncheck('9.9', 1.0)"))
+    _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", personal_r_c("gina"), "m_equivalent = (0.72, 0.48)"))
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
     out = sub.parent / "grades.csv"
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
@@ -52,8 +54,8 @@ def graded(tmp_path_factory):
 def test_command_succeeds_and_prints_summary(graded):
     proc, rows, _, _ = graded
     assert proc.returncode == 0, proc.stderr
-    assert "student" in proc.stdout and "7 notebooks" in proc.stdout
-    assert len(rows) == 7
+    assert "student" in proc.stdout and "8 notebooks" in proc.stdout
+    assert len(rows) == 8
 
 
 def test_full_marks_for_right_answers(graded):
@@ -114,7 +116,8 @@ def test_csv_and_summary_from_rows(tmp_path):
             GradeRow("y", "", "malformed", notes="not a valid notebook")]
     p = write_csv(rows, tmp_path / "g.csv")
     text = p.read_text()
-    assert text.splitlines()[0] == "student,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message"
+    assert text.splitlines()[0] == ("student,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message,"
+                                    "seconds,peak_mb,attempts")
     assert "x,lab2,graded,1,2,1,0," in text
     s = summary(rows)
     assert "1/2" in s and "y: malformed" in s
@@ -124,3 +127,16 @@ def test_missing_folder_is_a_clear_error(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(tmp_path / "nope")],
                           capture_output=True, text=True, cwd=ROOT)
     assert proc.returncode == 2 and "no such folder" in proc.stderr
+
+
+def test_check_attempts_are_reported_per_task(graded):
+    _, rows, _, _ = graded
+    assert rows["hank_lab2"]["attempts"] == "2.1:3 2.3:1"  # an unknown task is not counted
+    assert rows["alice_lab2"]["attempts"] == ""
+
+
+def test_rows_record_wall_time_and_peak_memory(graded):
+    _, rows, _, _ = graded
+    a = rows["alice_lab2"]
+    assert 0 < float(a["seconds"]) < 600 and float(a["peak_mb"]) > 10
+    assert rows["dave_lab2"]["seconds"] == ""  # nothing was run for a malformed notebook

@@ -6,13 +6,64 @@ merges with the others' (:func:`merge_csv`).
 from __future__ import annotations
 
 import csv
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import check as _check
 
-__all__ = ["GradeRow", "write_csv", "read_csv", "merge_csv", "summary"]
+__all__ = ["GradeRow", "write_csv", "read_csv", "merge_csv", "summary", "excerpt", "cell", "RowWriter"]
+
+
+def excerpt(text, n: int = 40) -> str:
+    """Student text as it may appear in a row: printable characters only, at most ``n`` of them.
+
+    Parameters
+    ----------
+    text : object
+        Anything a notebook chose (an exception name, a lab name, a verdict echoing an answer).
+    n : int
+        Longest excerpt.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> excerpt("line one\\nline two " + "x" * 80, 20)
+    'line one line two x…'
+    """
+    s = " ".join("".join(c if c.isprintable() else " " for c in str(text)[:4 * n + 100]).split())
+    return s if len(s) <= n else s[:n - 1] + "…"
+
+
+_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+
+
+def cell(value) -> str:
+    """A CSV cell that a spreadsheet shows as text: one that starts like a formula gets a ``'``.
+
+    Parameters
+    ----------
+    value : object
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> cell("=1+2*3_lab1"), cell("@SUM(A1)"), cell("alice")
+    ("'=1+2*3_lab1", "'@SUM(A1)", 'alice')
+    """
+    s = str(value)
+    return "'" + s if s.startswith(_FORMULA) else s
+
+
+def _uncell(s: str) -> str:
+    return s[1:] if s[:1] == "'" and s[1:2] in _FORMULA else s
 
 
 @dataclass
@@ -38,6 +89,12 @@ class GradeRow:
         Task id -> the verdict (``"✔ ..."`` or ``"✘ ..."``) with its message.
     mismatch : str
         What disagrees about the lab (file name, notebook metadata, ``--lab``); empty if nothing.
+    seconds : float or None
+        Wall time of grading the notebook (s).
+    peak_mb : float or None
+        Peak memory of the submission's processes (MB).
+    attempts : dict
+        Task id -> number of ``check(...)`` calls the notebook made (as its kernel reported them).
 
     Examples
     --------
@@ -54,6 +111,9 @@ class GradeRow:
     notes: str = ""
     messages: dict = field(default_factory=dict)
     mismatch: str = ""
+    seconds: float | None = None
+    peak_mb: float | None = None
+    attempts: dict = field(default_factory=dict)
 
     @property
     def total(self) -> float:
@@ -71,9 +131,26 @@ def _task_columns(rows) -> list[str]:
     return [t for t in order if t in used] + extra
 
 
+_EXTRA = ["seconds", "peak_mb", "attempts"]
+
+
+def _header(cols: list[str]) -> list[str]:
+    return (["student", "lab", "status", "total", "max"] + cols + ["notes", "mismatch"]
+            + [f"{c} message" for c in cols] + _EXTRA)
+
+
+def _record(r: GradeRow, cols: list[str]) -> list[str]:
+    num = lambda x: "" if x is None else f"{x:g}"  # noqa: E731
+    attempts = " ".join(f"{k}:{v}" for k, v in sorted(r.attempts.items()))
+    return [cell(x) for x in [r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
+            + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes, r.mismatch]
+            + [r.messages.get(c, "") for c in cols] + [num(r.seconds), num(r.peak_mb), attempts]]
+
+
 def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
     """Write the grade table: student, lab, status, total, max, a score column per task, notes,
-    the lab mismatch, then one verdict message column per task (``"2.1 message"``).
+    the lab mismatch, one verdict message column per task (``"2.1 message"``), then the wall time,
+    peak memory and check attempts. A cell that starts like a formula is escaped (:func:`cell`).
 
     Parameters
     ----------
@@ -89,20 +166,61 @@ def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
     >>> import pathlib, tempfile
     >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}, messages={"2.1": "✔ ok"})]
     >>> path = write_csv(rows, pathlib.Path(tempfile.mkdtemp()) / "grades.csv")
-    >>> path.read_text(encoding="utf-8").splitlines()
-    ['student,lab,status,total,max,2.1,notes,mismatch,2.1 message', 'alice,lab2,graded,1,1,1,,,✔ ok']
+    >>> path.read_text(encoding="utf-8").splitlines()[1]
+    'alice,lab2,graded,1,1,1,,,✔ ok,,,'
     """
     path = Path(path)
     cols = _task_columns(rows)
-    with path.open("w", newline="", encoding="utf-8") as f:
+    tmp = path.with_name(path.name + ".partial")
+    with tmp.open("w", newline="", encoding="utf-8") as f:
         w = csv.writer(f)
-        w.writerow(["student", "lab", "status", "total", "max"] + cols + ["notes", "mismatch"]
-                   + [f"{c} message" for c in cols])
+        w.writerow(_header(cols))
         for r in rows:
-            w.writerow([r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
-                       + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes, r.mismatch]
-                       + [r.messages.get(c, "") for c in cols])
+            w.writerow(_record(r, cols))
+    os.replace(tmp, path)
     return path
+
+
+class RowWriter:
+    """A grade table written row by row as notebooks finish (every task column of every lab), so
+    that a grader that is killed leaves the rows it had; :meth:`close` rewrites it compactly.
+
+    Parameters
+    ----------
+    path : str or Path
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> p = pathlib.Path(tempfile.mkdtemp()) / "g.csv"
+    >>> w = RowWriter(p)
+    >>> w.add(GradeRow("=cmd", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}))
+    >>> read_csv(p)[0].student
+    '=cmd'
+    >>> w.close()
+    >>> p.read_text(encoding="utf-8").splitlines()[0]
+    'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,attempts'
+    """
+
+    def __init__(self, path: str | Path):
+        self.path, self.rows = Path(path), []
+        self.cols = [t.id for t in _check.tasks()]
+        self._f = self.path.open("w", newline="", encoding="utf-8")
+        self._w = csv.writer(self._f)
+        self._w.writerow(_header(self.cols))
+        self._f.flush()
+
+    def add(self, row: GradeRow) -> None:
+        """Append one row and flush it to disk."""
+        self.rows.append(row)
+        self._w.writerow(_record(row, self.cols))
+        self._f.flush()
+        os.fsync(self._f.fileno())
+
+    def close(self) -> None:
+        """Rewrite the table with the task columns that are used, rows in submission order."""
+        self._f.close()
+        write_csv(sorted(self.rows, key=lambda r: r.student), self.path)
 
 
 def read_csv(path: str | Path) -> list[GradeRow]:
@@ -127,13 +245,17 @@ def read_csv(path: str | Path) -> list[GradeRow]:
     rows = []
     with Path(path).open(newline="", encoding="utf-8") as f:
         for rec in csv.DictReader(f):
-            lab = rec.get("lab", "")
+            lab = _uncell(rec.get("lab", "") or "")
             tids = [k for k in rec if re.fullmatch(r"\d+\.\d+", k or "") and rec[k] != ""]
             points = {t.id: float(t.points) for t in _check.tasks(lab)} if lab else {}
             scores = {k: float(rec[k]) for k in tids}
+            rec = {k: _uncell(v or "") for k, v in rec.items()}
+            num = lambda x: float(x) if x else None  # noqa: E731
+            attempts = dict(a.split(":", 1) for a in rec.get("attempts", "").split() if ":" in a)
             rows.append(GradeRow(rec["student"], lab, rec["status"], scores, {k: points.get(k, 0.0) for k in tids},
                                  rec.get("notes", ""), {k: rec.get(f"{k} message", "") for k in tids},
-                                 rec.get("mismatch", "")))
+                                 rec.get("mismatch", ""), num(rec.get("seconds")), num(rec.get("peak_mb")),
+                                 {k: int(v) for k, v in attempts.items() if v.isdigit()}))
     return rows
 
 

@@ -6,56 +6,70 @@
     python -m balancelab.course.grading submissions/ --shard 1/4 --out part1.csv   # on machine 1 of 4
     python -m balancelab.course.grading merge part*.csv --out grades.csv
 
-Each ``*.ipynb`` under the folder is graded in two halves:
+Each ``*.ipynb`` under the folder is graded by a child process of its own (the runner,
+:mod:`balancelab.course.runner`) with a memory, CPU and wall-clock limit:
 
-1. **untrusted**: the notebook is copied to a fresh scratch folder and run by
-   :mod:`balancelab.course.runner` inside the sandbox (:mod:`balancelab.course.sandbox`:
-   bubblewrap, writes only to the scratch folder, no network, the whole process group killed
-   at the limits), which exports every answer variable as plain data (numbers, strings, sympy
-   ``srepr``, a design as its joints, loads and springs) after every cell;
-2. **trusted**: this process, which imported the grader's own ``balancelab``, decodes that
-   data without evaluating code and runs each task's judge on it
+1. **untrusted**: the runner starts a fresh kernel **inside the sandbox**
+   (:mod:`balancelab.course.sandbox`: bubblewrap, nothing of the host but what a kernel needs,
+   no network, capped memory, processes and in-memory folders, :mod:`balancelab.course.caps`),
+   runs the notebook's cells in it and, after every cell, asks the kernel for every answer
+   variable as plain data (numbers, strings, sympy ``srepr``, a design as its joints, loads and
+   springs);
+2. **trusted**: the runner (outside the sandbox, with the grader's own ``balancelab``) decodes
+   that data without evaluating code and runs each task's judge on it, each under a time limit
    (:func:`~balancelab.course.check.check_data`, the same judge the student's ``check(...)``
-   runs); designs are rebuilt on the task's own mechanism and their balance recomputed here.
+   runs); designs are rebuilt on the task's own mechanism and their balance recomputed.
 
-Nothing else of the student's kernel reaches the grade: a patched ``check``, a forged verdict
-or a ``Design`` subclass with a faked report changes nothing. A score never exceeds the
-task's points. The submission is never modified.
+Nothing else of the student's kernel reaches the grade: a patched ``check``, a forged verdict,
+a ``Design`` subclass with a faked report, a printed fake result, a killed runner or a written
+file changes nothing (the report comes on a channel the kernel cannot reach; a runner that
+dies gives status ``error`` and 0). A score never exceeds the task's points. The submission is
+never modified; a link or a non-regular file is refused, not read.
 
-The result is one row per notebook: lab, status, total, max, the score of each task, notes,
-the lab mismatch flag and each task's verdict message. A notebook that is not valid JSON,
-crashes its kernel, loops or belongs to no known lab gets a row with a clear status (the lab
-and maximum kept whenever the lab is known) and never stops the batch.
+Whose a submission is comes from ``--roster roster.csv`` (columns ``file``, ``student_id``) or
+from its file name (``ID_labN.ipynb`` or ``ID/labN.ipynb``), never from the notebook; personal
+numbers are that student's.
+
+The result is one row per notebook (written as each notebook finishes): lab, status, total,
+max, the score of each task, notes, the lab mismatch flag, each task's verdict message, the
+wall time, the peak memory and the check attempts per task. A notebook that is not valid JSON,
+crashes its kernel, loops, hits a cap or belongs to no known lab gets a row with a clear status
+and never stops the batch.
 """
 from __future__ import annotations
 
 import argparse
-import ast
-import json
 import os
 import re
-import shutil
+import signal
 import sys
 import tempfile
+import threading
 import time
-import warnings
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, as_completed
+from dataclasses import asdict, replace
 from pathlib import Path
 
 from . import check as _check
-from .gradetable import GradeRow, merge_csv, read_csv, summary, write_csv
-from .runner import ANSWERS_FILE, RESULT_MARK
-from .sandbox import NO_SANDBOX_WARNING, run_limited, sandbox_available
+from .caps import Caps, Cgroup
+from .gradetable import GradeRow, RowWriter, excerpt, merge_csv, read_csv, summary, write_csv
+from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
+                     resolve_lab)
+from .sandbox import NO_SANDBOX_WARNING, sandbox_available
+from .workers import _ACTIVE, SCRATCH_PREFIX, _forked_runner, _remove, _scratch_root, _stop, clean_stale  # noqa: F401
 
-__all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook", "grade_folder",
-           "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
+__all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
+           "grade_folder", "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
 
 
 STUDENT_VARIABLE = "STUDENT_ID"
 
 
 def grade_answers(answers: dict, lab: str, student: str = "") -> dict:
-    """Check every task of ``lab`` on exported answer data (variable -> encoded value).
+    """Check every task of ``lab`` on exported answer data (variable -> encoded value), in this process.
+
+    The grader itself judges in its runner process, each task under a time limit
+    (:func:`~balancelab.course.runner.judge_tasks`); this is for trusted data.
 
     Parameters
     ----------
@@ -75,9 +89,9 @@ def grade_answers(answers: dict, lab: str, student: str = "") -> dict:
 
     Examples
     --------
-    >>> r = grade_answers({"k_lamp": {"num": "196.2"}}, "lab2")
+    >>> r = grade_answers({"k_lamp": {"num": "12"}}, "lab2")
     >>> r["2.1"]["score"], r["2.2"]["message"]
-    (1.0, 'no answer: variable `lever_conditions` is not defined')
+    (0.0, 'no answer: variable `lever_conditions` is not defined')
     """
     out = {}
     for t in _check.tasks(lab):
@@ -108,9 +122,9 @@ def grade_namespace(namespace: dict, lab: str) -> dict:
 
     Examples
     --------
-    >>> r = grade_namespace({"k_lamp": 196.2}, "lab2")
+    >>> r = grade_namespace({"k_lamp": 12.0}, "lab2")
     >>> r["2.1"]["score"], r["2.2"]["message"]
-    (1.0, 'no answer: variable `lever_conditions` is not defined')
+    (0.0, 'no answer: variable `lever_conditions` is not defined')
     """
     from .check.data import encode_answer
 
@@ -120,184 +134,101 @@ def grade_namespace(namespace: dict, lab: str) -> dict:
                          sid if isinstance(sid, str) else "")
 
 
-def _norm_lab(lab) -> str | None:
-    if lab is None or str(lab).strip() == "":
-        return None
-    lab = str(lab).strip()
-    return lab if lab.startswith("lab") else f"lab{lab}"
-
-
-def resolve_lab(nb: dict, path: Path, lab: str | None = None) -> tuple[str | None, str]:
-    """The lab of a notebook and what disagrees about it.
-
-    ``--lab`` wins, then the notebook's ``balancelab.lab`` metadata, then ``labN`` in the
-    file name; every source that names another lab is reported.
-
-    Parameters
-    ----------
-    nb : dict
-        The notebook.
-    path : Path
-        Its file.
-    lab : str, optional
-        The lab forced on the command line.
-
-    Returns
-    -------
-    (str or None, str)
-        The lab (None if unknown) and the mismatch text (empty if all sources agree).
-
-    Examples
-    --------
-    >>> from pathlib import Path
-    >>> resolve_lab({"metadata": {"balancelab": {"lab": "lab5"}}}, Path("ann_lab1.ipynb"))
-    ('lab5', 'file name says lab1, metadata says lab5')
-    """
-    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
-    from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
-    m = re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE)
-    from_name = f"lab{m.group(1)}" if m else None
-    forced = _norm_lab(lab)
-    sources = [("file name", from_name), ("metadata", from_meta), ("--lab", forced)]
-    named = {v for _, v in sources if v}
-    mismatch = ", ".join(f"{k} says {v}" for k, v in sources if v) if len(named) > 1 else ""
-    return forced or from_meta or from_name, mismatch
-
-
-_PATCH_NAMES = {"check", "check_data", "grade_answers", "grade_namespace", "balance_report", "judge", "Verdict"}
-
-
-def _cheat_notes(nb) -> list[str]:
-    """What the notebook's code replaces that the grader ignores anyway (reported, never trusted)."""
-    found = set()
-    for cell in nb.get("cells", []):
-        if cell.get("cell_type") != "code":
-            continue
-        src = cell.get("source", "")
-        src = src if isinstance(src, str) else "".join(src)
-        try:
-            tree = ast.parse("\n".join(ln for ln in src.splitlines() if not ln.lstrip().startswith(("%", "!"))))
-        except SyntaxError:
-            continue
-        for node in ast.walk(tree):
-            targets = (node.targets if isinstance(node, ast.Assign) else [node.target]
-                       if isinstance(node, (ast.AugAssign, ast.AnnAssign)) else [])
-            for t in targets:
-                name = t.id if isinstance(t, ast.Name) else t.attr if isinstance(t, ast.Attribute) else None
-                if name in _PATCH_NAMES:
-                    found.add(f"replaces `{name}`")
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name in _PATCH_NAMES:
-                found.add(f"redefines `{node.name}`")
-            if isinstance(node, ast.ClassDef) and any("Design" in ast.unparse(b) or "Verdict" in ast.unparse(b)
-                                                      for b in node.bases):
-                found.add(f"subclasses {', '.join(ast.unparse(b) for b in node.bases)}")
-    if not found:
-        return []
-    return [f"the notebook {', '.join(sorted(found))}: ignored (the grader checks the exported answers itself)"]
-
-
-def _read_notebook(path: Path):
+def _parse_notebook(data: bytes):
+    sys.modules.setdefault("rfc3987_syntax", None)  # jsonschema's 4 s IRI grammar: no IRI is validated here
     import nbformat
 
     try:
-        nb = nbformat.read(path, as_version=4)
+        nb = nbformat.reads(data.decode("utf-8"), as_version=4)
         nbformat.validate(nb)
         return nb, ""
-    except Exception as e:  # not JSON, not a notebook, wrong schema
-        first = str(e).splitlines()[0][:120] if str(e) else ""
-        return None, f"not a valid notebook: {type(e).__name__}: {first}"
+    except Exception as e:  # not UTF-8, not JSON, not a notebook, wrong schema
+        return None, f"not a valid notebook: {type(e).__name__}: {excerpt(str(e).splitlines()[0] if str(e) else '', 80)}"
 
 
-def _run(path: Path, lab: str, cell_timeout: int, notebook_timeout: int, sandbox: bool | None):
-    """Run the notebook in the sandbox; ``(status, answers, notes)`` (answers are untrusted data)."""
-    variables = [t.variable for t in _check.tasks(lab)] + [STUDENT_VARIABLE]
-    root = os.environ.get("BALANCELAB_SCRATCH") or None
-    scratch = Path(tempfile.mkdtemp(prefix="balancelab-grade-", dir=root))
+def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps: Caps, sandbox: bool,
+            scratch: Path) -> tuple[list[dict], str, Cgroup]:
+    """Start the runner for one notebook; its report lines and how it ended."""
+    share = scratch / "ipc"
+    share.mkdir()
+    cgroup = Cgroup(caps)
+    job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
+               caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
+               scratch=str(scratch))
+    lines, ended, _ = _forked_runner(job, wall, int(wall) + 30)
+    return lines, ended, cgroup
+
+
+def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeout: int,
+         sandbox: bool, caps: Caps):
+    """Run and judge one notebook; ``(status, results, notes, extra)`` (results: task id -> dict)."""
+    scratch = Path(tempfile.mkdtemp(prefix=f"{SCRATCH_PREFIX}{os.getpid()}-", dir=_scratch_root()))
+    cgroup = None
     try:
         copy = scratch / "submission.ipynb"
-        shutil.copyfile(path, copy)
-        env = {**os.environ, "PYTHONUNBUFFERED": "1", "HOME": str(scratch),
-               "JUPYTER_RUNTIME_DIR": str(scratch / ".runtime"), "IPYTHONDIR": str(scratch / ".ipython"),
-               "MPLCONFIGDIR": str(scratch / ".mpl"), "MPLBACKEND": "Agg"}
-        cmd = [sys.executable, "-m", "balancelab.course.runner", str(copy), "--vars", ",".join(variables),
-               "--cell-timeout", str(cell_timeout)]
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
-            res = run_limited(cmd, scratch, notebook_timeout, env=env, sandbox=sandbox)
-        notes = [] if res.sandboxed else ["NO SANDBOX (bubblewrap missing): ran with resource limits only"]
-        data = None
-        for line in res.stdout.splitlines():
-            if line.startswith(RESULT_MARK):
-                try:
-                    data = json.loads(line[len(RESULT_MARK):])
-                except ValueError:
-                    data = None
-        saved = _saved_answers(scratch / ANSWERS_FILE)
-        if res.timed_out:
-            return "timeout", saved, notes + [f"the notebook ran longer than {notebook_timeout} s in total and "
-                                              "was killed; the answers given before are graded"]
-        if not isinstance(data, dict):
-            err = (res.stderr.strip().splitlines() or ["no output"])[-1][:200]
-            return "error", saved, notes + [f"the notebook could not be run: {err}"]
-        answers = data.get("answers") if isinstance(data.get("answers"), dict) else saved
-        notes += [str(x)[:300] for x in list(data.get("errors", []))[:50] + list(data.get("notes", []))[:10]]
-        status = data.get("status") if data.get("status") in ("graded", "timeout", "kernel died", "error") \
-            else "error"
-        return status, answers, notes
+        copy.write_bytes(path_data)
+        ntasks = len(_check.tasks(lab))
+        wall = notebook_timeout + ntasks * caps.judge_seconds + 60
+        lines, ended, cgroup = _runner(copy, lab, sid, cell_timeout, wall, caps, sandbox, scratch)
+        run = next((x["run"] for x in lines if isinstance(x.get("run"), dict)), None)
+        results = {x["task"]["id"]: x["task"] for x in lines if isinstance(x.get("task"), dict)}
+        peak = cgroup.peak()
+        hits = cgroup.hits()
+        extra = dict(peak=peak, attempts={})
+        if run is None:
+            why = ended or "the runner stopped before reporting"
+            return "error", {}, [f"{why}: nothing was graded (0 points)"] + \
+                ([f"{h} cap reached" for h in hits]), extra
+        status = run.get("status") if run.get("status") in ("graded", "timeout", "kernel died", "error") else "error"
+        notes = [str(x) for x in run.get("errors", []) + run.get("notes", [])]
+        if isinstance(run.get("declared"), str):
+            extra["declared"] = run["declared"]
+        if run.get("peak") and not peak:
+            extra["peak"] = run["peak"]
+        extra["attempts"] = {str(k): int(v) for k, v in run.get("attempts", {}).items()
+                             if isinstance(v, int) and not isinstance(v, bool)}
+        missing = [t.id for t in _check.tasks(lab) if t.id not in results]
+        if missing:
+            notes.append(f"{ended or 'the runner stopped'} while checking task {missing[0]}: "
+                         f"task{'s' if len(missing) > 1 else ''} {', '.join(missing)} not graded (0 points)")
+        return status, results, notes, extra
     finally:
+        if cgroup is not None:
+            cgroup.remove()
         _remove(scratch)
 
 
-def _remove(folder: Path) -> None:
-    """Delete a scratch folder; a process of the sandbox that is still dying may write for a moment."""
-    for _ in range(50):
-        shutil.rmtree(folder, ignore_errors=True)
-        if not folder.exists():
-            return
-        time.sleep(0.1)
-    print(f"WARNING: could not delete the scratch folder {folder}", file=sys.stderr, flush=True)
-
-
-def _saved_answers(path: Path) -> dict:
-    try:
-        data = json.loads(path.read_text(encoding="utf-8")[:10 ** 7])
-    except (OSError, ValueError):
-        return {}
-    return data if isinstance(data, dict) else {}
-
-
-def _student_id(answers: dict, name: str) -> tuple[str, list[str]]:
-    """The ``STUDENT_ID`` a notebook declares (for personal numbers) and a note if the file disagrees."""
-    from .check.data import decode_answer
-
-    sid = decode_answer(answers.get(STUDENT_VARIABLE, {"str": ""})) if isinstance(answers, dict) else ""
-    sid = sid.strip() if isinstance(sid, str) else ""
-    if sid and sid.lower() not in name.lower():
-        return sid, [f"STUDENT_ID {sid!r} does not appear in the submission's name {name!r}: personal "
-                     "numbers graded as declared, check who handed this in"]
-    return sid, []
+def _refused(student: str, why: str) -> GradeRow:
+    return GradeRow(student, "", "refused", notes=f"not graded: {why}")
 
 
 def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
-                   notebook_timeout: int = 600, student: str | None = None,
-                   sandbox: bool | None = None) -> GradeRow:
-    """Grade one submitted notebook: run it in the sandbox, check its exported answers here.
+                   notebook_timeout: int = 600, student: str | None = None, student_id: str | None = None,
+                   sandbox: bool | None = None, caps: Caps | None = None, id_source: str = "given") -> GradeRow:
+    """Grade one submitted notebook: run it in the sandbox, judge its exported answers outside.
 
     Parameters
     ----------
     path : str or Path
-        The submission (read only).
+        The submission (read only; a link or a non-regular file is refused).
     lab : str, optional
         Force the lab (``"lab2"`` or ``"2"``); otherwise read from the notebook's
         ``balancelab.lab`` metadata or a ``labN`` in its file name. Disagreements are flagged.
     cell_timeout : int
-        Per-cell limit (s); a looping cell is interrupted, one that ignores the interrupt is killed.
+        Per-cell limit (s); a looping cell is interrupted, one that does not stop is killed.
     notebook_timeout : int
-        Limit for the whole notebook (s); past it the sandbox is killed.
+        Limit for running the whole notebook (s); checking the answers has its own limit.
     student : str, optional
         Name for the row (default: the file name without suffix).
+    student_id : str, optional
+        Whose personal numbers to judge with (default: from the file name, see
+        :func:`~balancelab.course.intake.identity`); never taken from the notebook.
     sandbox : bool, optional
         Force the sandbox on or off (default: on when bubblewrap works).
+    caps : Caps, optional
+        The submission's caps (:class:`~balancelab.course.caps.Caps`).
+    id_source : str
+        Where ``student_id`` came from (for the row's note).
 
     Returns
     -------
@@ -314,9 +245,14 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     >>> row.status, row.total, row.max_total, row.notes.split(":")[0]
     ('malformed', 0.0, 5.0, 'not a valid notebook')
     """
+    start = time.monotonic()
     path = Path(path)
     student = student or path.stem
-    nb, problem = _read_notebook(path)
+    try:
+        data = read_regular(path, MAX_NOTEBOOK)
+    except OSError as e:
+        return _refused(student, str(e) if isinstance(e, PermissionError) else f"cannot be read ({type(e).__name__})")
+    nb, problem = _parse_notebook(data)
     lb, mismatch = resolve_lab(nb or {}, path, lab)
     known = {t.lab for t in _check.tasks()}
     points = {t.id: float(t.points) for t in _check.tasks(lb)} if lb in known else {}
@@ -324,17 +260,31 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     if nb is None:
         return GradeRow(student, lb if lb in known else "", "malformed", zero, points, problem, mismatch=mismatch)
     if lb not in known:
-        return GradeRow(student, lb or "", "unknown lab", notes="cannot tell which lab this is (no balancelab.lab "
+        return GradeRow(student, "", "unknown lab", notes="cannot tell which lab this is (no balancelab.lab "
                         "metadata, no 'labN' in the file name); pass --lab", mismatch=mismatch)
-    status, answers, notes = _run(path, lb, cell_timeout, notebook_timeout, sandbox)
-    sid, id_note = _student_id(answers, student)
-    results = grade_answers(answers, lb, sid)
-    notes = _cheat_notes(nb) + id_note + notes
+    sid, how = (student_id, id_source) if student_id is not None else identity(path.name, None)
+    use = sandbox_available() if sandbox is None else sandbox
+    status, results, run_notes, extra = _run(data, lb, sid, cell_timeout, notebook_timeout, use, caps or Caps())
+    notes = cheat_notes(nb) + ([] if use else ["NO SANDBOX (bubblewrap missing or turned off): the kernel ran with "
+                                               "resource limits only"])
+    if not sid:
+        notes.append(f"no student id ({how}): judged with the published numbers")
+    declared = extra.get("declared")
+    if declared and declared != sid:
+        notes.append(f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)} but is "
+                     f"{sid!r}'s ({how}): judged with {sid!r}'s numbers" if sid else
+                     f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)}: ignored")
+    notes += [excerpt(n, 300) for n in run_notes[:20]]
     if mismatch:
         notes.insert(0, f"lab mismatch ({mismatch}): graded as {lb}")
-    messages = {tid: ("✔ " if r["correct"] else "✘ ") + r["message"] for tid, r in results.items()}
-    scores = {tid: results[tid]["score"] for tid in points}
-    return GradeRow(student, lb, status, scores, points, "; ".join(notes), messages, mismatch)
+    scores = {tid: float(results[tid]["score"]) if tid in results else 0.0 for tid in points}
+    scores = {tid: min(max(v, 0.0), points[tid]) if v == v else 0.0 for tid, v in scores.items()}
+    messages = {tid: ("✔ " if results[tid].get("correct") else "✘ ") + excerpt(results[tid].get("message", ""), 200)
+                for tid in points if tid in results}
+    peak = extra.get("peak")
+    return GradeRow(student, lb, status, scores, points, "; ".join(notes), messages, mismatch,
+                    round(time.monotonic() - start, 2), round(peak / 2 ** 20, 1) if peak else None,
+                    extra.get("attempts", {}))
 
 
 def shard(files: list, spec: str | None) -> list:
@@ -371,14 +321,15 @@ def shard(files: list, spec: str | None) -> list:
 
 def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
                  notebook_timeout: int = 600, progress: bool = False, jobs: int = 1,
-                 shard_spec: str | None = None, sandbox: bool | None = None) -> list[GradeRow]:
-    """Grade every ``*.ipynb`` under ``folder`` (checkpoints skipped), one row each.
+                 shard_spec: str | None = None, sandbox: bool | None = None, roster: dict | None = None,
+                 out: str | Path | None = None, caps: Caps | None = None) -> list[GradeRow]:
+    """Grade every ``*.ipynb`` under ``folder`` (checkpoints skipped, links refused), one row each.
 
     Parameters
     ----------
     folder : str or Path
-        Folder of submissions (searched recursively).
-    lab, cell_timeout, notebook_timeout, sandbox
+        Folder of submissions (searched recursively, links never followed).
+    lab, cell_timeout, notebook_timeout, sandbox, caps
         As in :func:`grade_notebook`.
     progress : bool
         Print one line per notebook as it is graded.
@@ -386,6 +337,11 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         Notebooks graded at the same time (>= 1).
     shard_spec : str, optional
         ``"i/n"``: grade only that share of the folder (see :func:`shard`).
+    roster : dict, optional
+        Submission file -> student id (:func:`~balancelab.course.intake.read_roster`); without
+        it the id is read from the file name (:func:`~balancelab.course.intake.identity`).
+    out : str or Path, optional
+        CSV written row by row as notebooks finish (then rewritten compactly at the end).
 
     Returns
     -------
@@ -409,20 +365,38 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         raise FileNotFoundError(f"no such folder: {folder}")
     if not isinstance(jobs, int) or jobs < 1:
         raise ValueError(f"jobs must be an integer >= 1, got {jobs!r}")
-    files = shard(sorted(p for p in folder.rglob("*.ipynb") if ".ipynb_checkpoints" not in p.parts), shard_spec)
+    files = shard(find_submissions(folder), shard_spec)
     if sandbox is None and not sandbox_available():
         print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
+    clean_stale()
+    Cgroup.clean_stale()
+    writer = RowWriter(out) if out is not None else None
 
     def one(p):
-        name = str(p.relative_to(folder).with_suffix(""))
-        row = grade_notebook(p, lab=lab, cell_timeout=cell_timeout, notebook_timeout=notebook_timeout,
-                             student=name, sandbox=sandbox)
+        rel = str(p.relative_to(folder))
+        name = rel[:-len(".ipynb")]
+        sid, how = identity(rel, roster)
+        try:
+            row = grade_notebook(p, lab=lab, cell_timeout=cell_timeout, notebook_timeout=notebook_timeout,
+                                 student=name, student_id=sid, sandbox=sandbox, caps=caps, id_source=how)
+        except Exception as e:  # never stop the batch
+            row = GradeRow(name, "", "error", notes=f"the grader failed on this notebook ({type(e).__name__})")
         if progress:
-            print(f"graded {name}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
+            print(f"graded {excerpt(name, 80)}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
         return row
 
-    with ThreadPoolExecutor(max_workers=jobs) as pool:
-        return list(pool.map(one, files))
+    rows = {}
+    try:
+        with ThreadPoolExecutor(max_workers=jobs) as pool:
+            futures = {pool.submit(one, p): p for p in files}
+            for fut in as_completed(futures):
+                rows[futures[fut]] = row = fut.result()
+                if writer is not None:
+                    writer.add(row)
+    finally:
+        if writer is not None:
+            writer.close()
+    return [rows[p] for p in files if p in rows]
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -432,11 +406,16 @@ def _parser() -> argparse.ArgumentParser:
     ap.add_argument("folder", nargs="*", help="folder of submitted notebooks (or 'merge' and CSV files)")
     ap.add_argument("--out", default="grades.csv", help="CSV file to write (default grades.csv)")
     ap.add_argument("--lab", default=None, help="force the lab (e.g. lab2); default: from each notebook")
+    ap.add_argument("--roster", default=None, help="CSV with columns file,student_id (default: the id is "
+                                                   "the file name's ID in ID_labN.ipynb or ID/labN.ipynb)")
     ap.add_argument("--cell-timeout", type=int, default=60, help="per-cell time limit in s (default 60)")
     ap.add_argument("--notebook-timeout", type=int, default=600,
                     help="limit for a whole notebook in s (default 600)")
     ap.add_argument("--jobs", type=int, default=1, help="notebooks graded in parallel (default 1)")
     ap.add_argument("--shard", default=None, help="grade only share i of n of the folder, e.g. 2/8")
+    ap.add_argument("--memory-mb", type=int, default=None, help="memory cap of one submission's processes "
+                                                                "(default 2048)")
+    ap.add_argument("--judge-timeout", type=float, default=None, help="time to check one answer in s (default 20)")
     ap.add_argument("--no-sandbox", action="store_true", help="run without bubblewrap (trusted work only)")
     return ap
 
@@ -472,14 +451,25 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     if len(args.folder) != 1:
         ap.error("give one folder of submissions")
+    caps = Caps()
+    if args.memory_mb is not None:
+        caps = replace(caps, memory=args.memory_mb * 2 ** 20)
+    if args.judge_timeout is not None:
+        caps = replace(caps, judge_seconds=args.judge_timeout)
     try:
+        roster = read_roster(args.roster) if args.roster else None
+        if not Path(args.folder[0]).is_dir():
+            raise FileNotFoundError(f"no such folder: {args.folder[0]}")
+        if threading.current_thread() is threading.main_thread():
+            for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+                signal.signal(sig, _stop)
         rows = grade_folder(args.folder[0], lab=args.lab, cell_timeout=args.cell_timeout,
                             notebook_timeout=args.notebook_timeout, progress=True, jobs=args.jobs,
-                            shard_spec=args.shard, sandbox=False if args.no_sandbox else None)
-    except (FileNotFoundError, ValueError) as e:
+                            shard_spec=args.shard, sandbox=False if args.no_sandbox else None, roster=roster,
+                            out=args.out, caps=caps)
+    except (FileNotFoundError, ValueError, OSError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
-    write_csv(rows, args.out)
     print(summary(rows))
     print(f"wrote {args.out}")
     return 0

@@ -416,7 +416,9 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
 
     ``out/labs`` holds the student versions (generated now from ``src``), ``out/package`` the
     library to install, ``out/README.md`` what to do. The hand-out is scanned afterwards:
-    no solution notebook, no solution region and no ``BEGIN SOLUTION`` marker may be in it.
+    no solution notebook, no solution region and no ``BEGIN SOLUTION`` marker may be in it, and
+    no number in a docstring of the package may pass a numeric task
+    (:func:`~balancelab.course.leaks.answer_leaks`).
 
     Parameters
     ----------
@@ -455,6 +457,12 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
 
 def _scan_handout(out: Path, src) -> None:
     import nbformat
+
+    from .leaks import answer_leaks
+
+    leaks = answer_leaks(out / "package" / "balancelab")
+    if leaks:
+        raise RuntimeError(f"an answer is in a docstring of the hand-out's package: {leaks[0]}")
 
     regions = [line.strip() for s in sorted(Path(src).glob("*.ipynb"))
                for text in solution_texts(nbformat.read(s, as_version=4), s.name) for line in text.splitlines()

@@ -1,46 +1,86 @@
-"""Run one submitted notebook inside the sandbox and export its answers as plain data.
+"""Run one submitted notebook and judge its answers: the trusted runner, one process per notebook.
 
-This is the untrusted half of grading (:mod:`balancelab.course.grading` is the trusted half):
-``python -m balancelab.course.runner NOTEBOOK --lab lab2 --vars k_lamp,... --cell-timeout 60``
-runs in the sandbox (:mod:`balancelab.course.sandbox`), executes the notebook cell by cell in
-a fresh kernel and, after every code cell, asks the kernel for the current value of each
-answer variable, encoded by :func:`~balancelab.course.check.data.encode_answer` (whose source
-is sent to the kernel). The answers are written to ``answers.json`` in the scratch folder
-after every cell, so a notebook killed later still keeps the answers it had; the last line
-of the output is a JSON summary (cells that failed or timed out).
+``python -m balancelab.course.runner NOTEBOOK --lab lab2 --student s123 --scratch DIR`` is
+started by :mod:`balancelab.course.grading` with a memory and CPU limit and a wall-clock limit.
+It runs **outside** the sandbox; only the kernel runs inside it
+(:func:`~balancelab.course.sandbox.sandbox_command`, launched by :class:`SandboxKernelManager`),
+talking to the runner over the Jupyter protocol on unix sockets in a folder of the scratch
+folder (made read-only once the kernel is up). So code in the notebook
 
-Nothing here judges an answer: the output is data that the grader checks on its own.
-A cell that passes its time limit is interrupted (SIGINT); if it is still running two
-seconds later (a cell that ignores SIGINT) the kernel is killed and the run stops there.
+* cannot write to the runner's output: the runner keeps its report channel on a private file
+  descriptor and gives the kernel ``/dev/null`` as output; the kernel cannot see the runner's
+  processes (its own PID namespace) nor signal or trace them;
+* reaches the runner only as protocol messages, whose outputs are kept up to
+  :attr:`~balancelab.course.caps.Caps.output` bytes;
+* cannot choose a status, a note or a score: the runner decides the status itself and sends
+  only the answer variables' **data**, which it judges itself (:mod:`balancelab.course.check`,
+  each task under a time limit) after the kernel is gone.
+
+After every code cell the runner executes an export cell (:func:`export_source`) whose output
+line carries a fresh random nonce; only that line is read. The report, written on the private
+descriptor, is one JSON object per line: ``{"run": ...}`` when the notebook has run, then one
+``{"task": ...}`` per judged task, then ``{"done": true}``. A runner that dies before its
+``run`` line yields status ``error`` and no points (the grader never reads a file the kernel
+could have written).
 """
 from __future__ import annotations
 
 import argparse
 import inspect
 import json
+import os
+import secrets
+import signal
 import sys
+import time
 from pathlib import Path
 
+from .caps import Caps, Cgroup
 from .check.data import encode_answer
+from .gradetable import excerpt
+from .sandbox import SHARE, WORK, limited, sandbox_command
 
-__all__ = ["RESULT_MARK", "ANSWER_MARK", "ANSWERS_FILE", "export_source", "run_notebook", "main"]
+__all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
 
-RESULT_MARK = "BALANCELAB-RUN-RESULT "
-ANSWER_MARK = "BALANCELAB-ANSWERS "
-ANSWERS_FILE = "answers.json"
+# jsonschema (imported by nbformat) builds an IRI grammar for 4 s on import; nothing here validates an IRI
+sys.modules.setdefault("rfc3987_syntax", None)
+
+#: Largest export (bytes of answer data after one cell).
+EXPORT_CAP = 4 * 2 ** 20
 #: Seconds a cell may keep running after the interrupt at its time limit.
 INTERRUPT_GRACE = 2.0
 #: The encoder's source, read once when this module is imported (the code that is running).
 _ENCODER_SOURCE = inspect.getsource(encode_answer).replace("encode_answer", "_bl_encode_answer")
+#: A serializer the export defines afresh each time (a notebook that patches ``json.dumps`` or
+#: ``print`` does not change what is exported).
+_SERIALIZER = '''
+def _bl_ser(x):
+    if x is None:
+        return "null"
+    if x is True or x is False:
+        return "true" if x else "false"
+    if type(x) in (int, float):
+        return repr(x) if x == x and abs(x) != float("inf") else '"nan"'
+    if type(x) is str:
+        return '"' + "".join(c if (c.isascii() and c.isprintable() and c not in '"\\\\') else
+                             "\\\\u%04x" % ord(c) if ord(c) < 0x10000 else "?" for c in x) + '"'
+    if type(x) in (list, tuple):
+        return "[" + ",".join(_bl_ser(v) for v in x) + "]"
+    if type(x) is dict:
+        return "{" + ",".join(_bl_ser(str(k)) + ":" + _bl_ser(v) for k, v in x.items()) + "}"
+    return '"?"'
+'''
 
 
-def export_source(variables: list[str]) -> str:
-    """The code the kernel runs after each cell: print the answer variables as encoded data.
+def export_source(variables: list[str], nonce: str) -> str:
+    """The code the kernel runs after each cell: write ``nonce`` and the answers' data on one line.
 
     Parameters
     ----------
     variables : list of str
         The answer variables of the lab.
+    nonce : str
+        A fresh random token (the runner reads only the line that starts with it).
 
     Returns
     -------
@@ -48,26 +88,98 @@ def export_source(variables: list[str]) -> str:
 
     Examples
     --------
-    >>> ns = {"k_lamp": 196.2}
     >>> import contextlib, io
-    >>> buf = io.StringIO()
+    >>> ns, buf = {"answer": 2.5, "other": "x"}, io.StringIO()
     >>> with contextlib.redirect_stdout(buf):
-    ...     exec(export_source(["k_lamp", "r_c"]), ns)
-    >>> buf.getvalue().split(" ", 1)[1].strip()
-    '{"k_lamp": {"num": "196.2"}}'
+    ...     exec(export_source(["answer", "missing"], "N0NCE"), ns)
+    >>> nonce, line = buf.getvalue().split(" ", 1)
+    >>> nonce, json.loads(line)["answer"], "missing" in json.loads(line)
+    ('N0NCE', {'num': '2.5'}, False)
     """
-    return (_ENCODER_SOURCE + "\nimport json as _bl_json\n"
-            f"print({ANSWER_MARK!r} + _bl_json.dumps({{_v: _bl_encode_answer(globals()[_v]) "
-            f"for _v in {list(variables)!r} if _v in globals()}}))\n"
-            "del _bl_encode_answer, _bl_json\n")
+    return (_ENCODER_SOURCE + _SERIALIZER +
+            "def _bl_export(_g):\n"
+            "    import sys as _s\n"
+            f"    _d = {{_v: _bl_encode_answer(_g[_v]) for _v in {list(variables)!r} if _v in _g}}\n"
+            "    _c = getattr(_s.modules.get('balancelab.course.check.core'), 'ATTEMPTS', None)\n"
+            "    if type(_c) is dict:\n"
+            "        _d['__attempts__'] = {str(k): v for k, v in _c.items() if type(v) is int}\n"
+            "    try:\n"
+            "        _o = __import__('os')\n"
+            "        _d['__fs__'] = {_p: 1 - _t.f_bavail / _t.f_blocks for _p in ('/tmp', '/dev/shm', '/home/student')\n"
+            "                        for _t in [_o.statvfs(_p)] if _t.f_blocks}\n"
+            "    except Exception:\n"
+            "        pass\n"
+            f"    type(_s.stdout).write(_s.stdout, {nonce!r} + ' ' + _bl_ser(_d) + '\\n')\n"
+            "try:\n"
+            "    _bl_export(globals())\n"
+            "finally:\n"
+            "    del _bl_export, _bl_ser, _bl_encode_answer\n")
 
 
-def _client_class():
+def _kernel_manager_class():
+    from jupyter_client.kernelspec import KernelSpec
+    from jupyter_client.manager import AsyncKernelManager
+
+    class SandboxKernelManager(AsyncKernelManager):
+        """A kernel started inside the sandbox, reached over unix sockets in ``share``."""
+
+        def setup(self, share: Path, caps: Caps, cgroup: Cgroup, sandbox: bool) -> None:
+            # relative socket paths (this process works in ``share``): a unix socket path has at most 107 bytes
+            self.transport, self.ip, self.sandboxed = "ipc", "k", sandbox
+            self.connection_file = str(share / "kernel.json")
+            kernel = [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}",
+                      "--HistoryManager.enabled=False"]
+            env = {"MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1", "PYTHONNOUSERSITE": "1",
+                   "IPYTHONDIR": f"{WORK}/.ipython", "MPLCONFIGDIR": f"{WORK}/.mpl",
+                   "JUPYTER_RUNTIME_DIR": f"{WORK}/.runtime", "PYDEVD_DISABLE_FILE_VALIDATION": "1"}
+            cpu = 24 * 3600
+            # with a cgroup the tree's memory is capped there; a process's address space (libraries and
+            # thread arenas reserve far more than they use) then only needs a loose limit
+            space = 4 * caps.memory if cgroup.dirs else caps.memory
+            if sandbox:
+                inner = limited(kernel, cpu, caps.file_size, space, caps.processes)
+                argv = cgroup.join_command(sandbox_command(inner, share, caps, env))
+            else:
+                argv = cgroup.join_command(limited(kernel, cpu, caps.file_size, space))
+            self._kernel_spec = KernelSpec(argv=argv, display_name="sandbox", language="python",
+                                           interrupt_mode="message", env={} if sandbox else env)
+
+        def format_kernel_cmd(self, extra_arguments=None):
+            conn = self.connection_file
+            if self.sandboxed:  # the kernel's copy names its sockets where it sees the folder
+                info = json.loads(Path(conn).read_text())
+                info["ip"] = f"{SHARE}/k"
+                Path(conn).with_name("kernel-sandbox.json").write_text(json.dumps(info))
+                conn = f"{SHARE}/kernel-sandbox.json"
+            return [a.replace("{connection_file}", conn) for a in self.kernel_spec.argv]
+
+    return SandboxKernelManager
+
+
+SandboxKernelManager = None  # the class is built on first use (jupyter_client is imported lazily)
+
+
+def _client_class(budget: int):
     from nbclient import NotebookClient
     from nbclient.exceptions import CellTimeoutError
 
     class _Client(NotebookClient):
-        """Interrupt at the cell limit; if the cell ignores it, give up after a short grace."""
+        """Interrupt at the cell limit, give up after a short grace; keep at most ``budget`` bytes."""
+
+        kept, dropped = 0, 0
+
+        def process_message(self, msg, cell, cell_index):
+            if msg.get("msg_type") not in ("status", "execute_input"):
+                size = len(repr(msg.get("content", "")))
+                if cell.get("metadata", {}).get("export"):   # the export has a budget of its own
+                    if size + sum(len(str(o.get("text", ""))) for o in cell.get("outputs", [])) > EXPORT_CAP:
+                        return None
+                    return super().process_message(msg, cell, cell_index)
+                if self.kept + size > budget:
+                    self.dropped += size
+                    return None
+                self.kept += size
+            return super().process_message(msg, cell, cell_index)
 
         async def _async_handle_timeout(self, timeout, cell=None):
             import asyncio
@@ -84,85 +196,320 @@ def _client_class():
                     break
                 if msg.get("msg_type") == "execute_reply":
                     return msg
-            raise CellTimeoutError.error_from_timeout_and_cell("Cell ignored the interrupt", timeout, cell)
+            raise CellTimeoutError.error_from_timeout_and_cell("Cell did not stop", timeout, cell)
 
     return _Client
 
 
-def _answers_of(cell) -> dict | None:
+def _exported(cell, nonce: str) -> dict | None:
+    found = None
     for o in cell.get("outputs", []):
-        if o.get("output_type") == "stream" and ANSWER_MARK in o.get("text", ""):
-            line = o["text"].rsplit(ANSWER_MARK, 1)[1].splitlines()[0]
-            try:
-                data = json.loads(line)
-            except ValueError:
-                return None
-            return data if isinstance(data, dict) else None
-    return None
+        if o.get("output_type") != "stream":
+            continue
+        for line in str(o.get("text", "")).splitlines():
+            if line.startswith(nonce + " "):
+                try:
+                    data = json.loads(line[len(nonce) + 1:])
+                except ValueError:
+                    return None
+                found = data if isinstance(data, dict) else None
+    return found
 
 
-def run_notebook(path: str | Path, variables: list[str], cell_timeout: int = 60,
-                 answers_file: str | Path | None = None) -> dict:
-    """Execute a notebook cell by cell, exporting the answer variables after each code cell.
+def _lock(share: Path) -> bool:
+    """Make the socket folder read-only for the kernel (its sockets exist by now): no disk there."""
+    try:
+        for p in [*share.iterdir(), share]:
+            os.chown(p, 65533, 65533, follow_symlinks=False)
+        share.chmod(0o555)
+        return True
+    except OSError:
+        return False
+
+
+def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
+                 caps: Caps | None = None, sandbox: bool = True, cgroup: Cgroup | None = None) -> dict:
+    """Execute a notebook cell by cell in a sandboxed kernel, exporting the answers after each cell.
 
     Parameters
     ----------
     path : str or Path
-        The notebook (a copy in the scratch folder).
+        The notebook (a copy the runner reads; the kernel never sees the file).
     variables : list of str
         The answer variables to export.
+    share : str or Path
+        An empty folder for the kernel's sockets.
     cell_timeout : int
         Per-cell limit (s).
-    answers_file : str or Path, optional
-        Where the answers are written after every cell (``answers.json`` beside the notebook).
+    caps : Caps, optional
+        The submission's caps.
+    sandbox : bool
+        Run the kernel in bubblewrap (False: only with resource limits).
+    cgroup : Cgroup, optional
+        The submission's cgroup (made, read and removed by the caller); none by default.
 
     Returns
     -------
     dict
-        ``{"status", "answers", "errors", "notes"}``; ``answers`` maps a variable to its
-        encoded value.
+        ``{"status", "answers", "attempts", "errors", "notes", "peak", "hits"}``.
     """
     import nbformat
     from nbclient.exceptions import CellTimeoutError, DeadKernelError
 
-    path = Path(path)
-    answers_file = Path(answers_file or path.with_name(ANSWERS_FILE))
+    global SandboxKernelManager
+    SandboxKernelManager = SandboxKernelManager or _kernel_manager_class()
+    caps, share, path = caps or Caps(), Path(share).resolve(), Path(path).resolve()
+    os.chdir(share)
     nb = nbformat.read(path, as_version=4)
-    client = _client_class()(nb, timeout=cell_timeout, kernel_name="python3", allow_errors=True,
-                             interrupt_on_timeout=True, shutdown_kernel="immediate",
-                             resources={"metadata": {"path": str(path.parent)}})
-    answers, errors, notes, status = {}, [], [], "graded"
-    cells = list(nb.cells)
-    probe = nbformat.v4.new_code_cell(export_source(variables))
-    nb.cells.append(probe)
-    with client.setup_kernel():
-        for i, cell in enumerate(cells):
-            if cell.cell_type != "code":
-                continue
-            try:
-                client.execute_cell(cell, i)
-                errors += [f"cell {i}: {o.get('ename')}" for o in cell.get("outputs", [])
-                           if o.get("output_type") == "error"]
-                probe.outputs = []
-                client.execute_cell(probe, len(cells))
-            except CellTimeoutError:
-                status = "timeout"
-                notes.append(f"cell {i} ran past the {cell_timeout} s cell limit and ignored the interrupt: "
-                             "its kernel was killed; the answers given before it are graded")
-                break
-            except DeadKernelError:
-                status = "kernel died"
-                notes.append(f"the kernel died in cell {i}; the answers given before it are graded")
-                break
-            found = _answers_of(probe)
-            if found is not None:
-                answers = found
-                answers_file.write_text(json.dumps(answers), encoding="utf-8")
-    return dict(status=status, answers=answers, errors=errors, notes=notes)
+    cells = [c for c in nb.cells]
+    nb.cells = [nbformat.v4.new_code_cell("")]
+    cgroup = cgroup or Cgroup.attach({})
+    km = SandboxKernelManager()
+    km.setup(share, caps, cgroup, sandbox)
+    client = _client_class(caps.output)(nb, km=km, timeout=cell_timeout, allow_errors=True,
+                                        interrupt_on_timeout=True, shutdown_kernel="immediate",
+                                        startup_timeout=120)
+    answers, errors, notes, status, full = {}, [], [], "graded", {}
+    if not cgroup.dirs:
+        notes.append("caps: the memory of the process tree and the process count are enforced per process "
+                     "only (no cgroup here)")
+    try:
+        with client.setup_kernel(stdout=open(os.devnull, "wb"), stderr=open(os.devnull, "wb")):
+            if sandbox and not _lock(share):
+                notes.append("caps: the socket folder stays writable (not root): disk use there is capped per file only")
+            for i, cell in enumerate(cells):
+                if cell.cell_type != "code":
+                    continue
+                nonce = secrets.token_hex(16)
+                probe = nbformat.v4.new_code_cell(export_source(variables, nonce), metadata={"export": True})
+                try:
+                    nb.cells[0] = cell
+                    client.execute_cell(cell, 0)
+                    errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
+                               + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
+                               for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
+                    cell.outputs = []
+                    nb.cells[0] = probe
+                    client.execute_cell(probe, 0)
+                except CellTimeoutError:
+                    status = "timeout"
+                    notes.append(f"cell {i} ran past the {cell_timeout} s cell limit and did not stop within "
+                                 f"{INTERRUPT_GRACE:g} s of the interrupt (a loop that ignores interrupts, or a "
+                                 "long computation in compiled code): its kernel was killed; the answers given "
+                                 "before it are graded")
+                    break
+                except DeadKernelError:
+                    status = "kernel died"
+                    hit = cgroup.hits()
+                    notes.append(f"the kernel died in cell {i}" + (f" at the {' and '.join(hit)} cap" if hit else "")
+                                 + "; the answers given before it are graded")
+                    break
+                except Exception as e:  # the kernel sent what the runner cannot read (a patched kernel)
+                    status = "error"
+                    notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
+                                 "the answers given before it are graded")
+                    break
+                found = _exported(probe, nonce)
+                if found is not None:
+                    fs = found.pop("__fs__", None)
+                    for p, used in (fs.items() if isinstance(fs, dict) else []):
+                        if isinstance(used, float) and used > full.get(p, 0.0):
+                            full[p] = used
+                    answers = found
+    finally:
+        peak, hits = cgroup.peak(), cgroup.hits()
+        cgroup.kill()
+    if peak is None:
+        import resource
+
+        peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024
+    attempts = answers.pop("__attempts__", {}) if isinstance(answers, dict) else {}
+    if client.dropped:
+        hits.append("output")
+        notes.append(f"output cap: {client.dropped / 2 ** 20:.1f} MB of output beyond {caps.output / 2 ** 20:g} MB "
+                     "were dropped")
+    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
+    for p, used in sorted(full.items()):
+        if used >= 0.98 and p in sizes:
+            hits.append(p)
+            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
+    if "memory" in hits:
+        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
+    if "processes" in hits:
+        notes.append(f"the process cap ({caps.processes} at once) was reached")
+    return dict(status=status, answers=answers, attempts=attempts if isinstance(attempts, dict) else {},
+                errors=errors, notes=notes, peak=peak, hits=hits)
+
+
+def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
+    """One task's verdict, computed in a forked child that is killed after ``seconds`` of CPU time (a
+    judge stuck in compiled code, which no alarm interrupts, or one that runs out of memory, costs
+    only its task)."""
+    from . import check as _check
+
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: judge, write the verdict, leave without cleaning up the parent's state
+        code = 0
+        try:
+            import resource
+
+            os.close(r)
+            cpu = max(1, int(seconds))  # CPU seconds: a limit that a loaded machine does not shorten
+            resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
+            v = _check.check_data(task_id, data, student)
+            os.write(w, json.dumps(dict(correct=bool(v.correct), message=v.message, score=float(v.score))).encode())
+        except MemoryError:
+            code = 3
+        except BaseException:
+            code = 4
+        finally:
+            os._exit(code)
+    os.close(w)
+    chunks, deadline = [], time.monotonic() + 4 * seconds + 10.0  # wall: a backstop for a judge that sleeps
+    import select
+
+    while (left := deadline - time.monotonic()) > 0:
+        ready, _, _ = select.select([r], [], [], left)
+        if not ready:
+            break
+        chunk = os.read(r, 1 << 16)
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(r)
+    try:
+        os.kill(pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    _, status = os.waitpid(pid, 0)
+    try:
+        return json.loads(b"".join(chunks))
+    except ValueError:
+        code = os.WEXITSTATUS(status) if os.WIFEXITED(status) else None
+        if code == 3:
+            return dict(correct=False, score=0.0, message="the answer needed more memory than the checker "
+                                                          "allows: not graded")
+        return dict(correct=False, score=0.0, message=f"the answer took more than {seconds:g} s to check: not graded")
+
+
+def judge_tasks(answers: dict, lab: str, student: str, seconds: float, report) -> None:
+    """Judge every task of ``lab`` on the exported data, each in a child stopped at ``seconds``.
+
+    Parameters
+    ----------
+    answers : dict
+        Variable -> encoded answer (untrusted data).
+    lab : str
+        The lab.
+    student : str
+        Whose personal numbers the tasks are judged with.
+    seconds : float
+        Time for one task; past it the task scores 0 with a message.
+    report : callable
+        Called with ``{"id", "score", "points", "correct", "message"}`` per task.
+
+    Examples
+    --------
+    >>> out = []
+    >>> judge_tasks({"k_lamp": {"num": "1.0"}}, "lab2", "", 10, out.append)
+    >>> out[0]["id"], out[0]["correct"], out[1]["message"]
+    ('2.1', False, 'no answer: variable `lever_conditions` is not defined')
+    """
+    from . import check as _check
+
+    for t in _check.tasks(lab):
+        row = dict(id=t.id, score=0.0, points=float(t.points), correct=False)
+        if not isinstance(answers, dict) or t.variable not in answers:
+            report({**row, "message": f"no answer: variable `{t.variable}` is not defined"})
+            continue
+        v = _judge_one(t.id, answers[t.variable], student, seconds)
+        ok = v.get("correct") is True
+        score = v.get("score") if isinstance(v.get("score"), float) else 0.0
+        row.update(correct=ok, message=str(v.get("message", "")),
+                   score=min(max(score, 0.0), float(t.points)) if ok else 0.0)
+        report(row)
+
+
+def _die_with_parent() -> None:
+    """Ask Linux to kill this runner when the grader dies (the kernel then dies with it)."""
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        pass
+
+
+def _private_channel():
+    """A writer on a duplicate of fd 1 that no child inherits; fd 1 and 2 then go to /dev/null."""
+    fd = os.dup(1)  # non-inheritable
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, 1)
+    os.dup2(null, 2)
+    os.close(null)
+    out = os.fdopen(fd, "w", encoding="utf-8")
+    sys.stdout = sys.stderr = open(os.devnull, "w")
+    return out
+
+
+def _grade(job: dict, emit) -> None:
+    """Run and judge one notebook (``job``: the command line's options as a dict), reporting by ``emit``."""
+    from . import check as _check  # the grader's own checks
+
+    caps = Caps(**job.get("caps", {}))
+    variables = [t.variable for t in _check.tasks(job["lab"])] + ["STUDENT_ID"]
+    start = time.monotonic()
+    try:
+        res = run_notebook(job["notebook"], variables, job["share"], int(job.get("cell_timeout", 60)), caps,
+                           not job.get("no_sandbox", False), Cgroup.attach(job.get("cgroup", {})))
+    except Exception as e:  # the kernel could not start, the notebook could not be read
+        res = dict(status="error", answers={}, attempts={}, errors=[], peak=None, hits=[],
+                   notes=[f"the notebook could not be run ({type(e).__name__})"])
+    res["seconds"] = round(time.monotonic() - start, 2)
+    answers = res.pop("answers")
+    declared = answers.pop("STUDENT_ID", None) if isinstance(answers, dict) else None
+    res["declared"] = declared.get("str") if isinstance(declared, dict) and isinstance(declared.get("str"), str) \
+        else None if declared is None else "(not a string)"
+    emit({"run": res})
+    judge_tasks(answers, job["lab"], job.get("student", ""), caps.judge_seconds, lambda row: emit({"task": row}))
+    emit({"done": True})
+
+
+def serve(job: dict, conn, cpu_seconds: int) -> None:
+    """The runner forked from a pre-imported server (:mod:`multiprocessing` forkserver): limits itself,
+    grades ``job`` and sends each report line on ``conn`` (the only channel to the grader).
+
+    Parameters
+    ----------
+    job : dict
+        As :func:`main`'s options.
+    conn : multiprocessing.connection.Connection
+        Write end of a pipe to the grader.
+    cpu_seconds : int
+        CPU limit of this process.
+    """
+    import resource
+
+    os.setsid()
+    _die_with_parent()
+    caps = Caps(**job.get("caps", {}))
+    for name, value in (("RLIMIT_AS", caps.runner_memory), ("RLIMIT_CPU", cpu_seconds),
+                        ("RLIMIT_FSIZE", caps.file_size), ("RLIMIT_CORE", 0)):
+        try:
+            resource.setrlimit(getattr(resource, name), (value, value))
+        except (ValueError, OSError):
+            pass
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, 1)
+    os.dup2(null, 2)
+    os.close(null)
+    _grade(job, lambda obj: conn.send_bytes(json.dumps(obj).encode()))
+    conn.close()
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Command line (see the module docstring); prints the JSON summary after :data:`RESULT_MARK`.
+    """Command line (see the module docstring).
 
     Parameters
     ----------
@@ -171,20 +518,28 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        0 when the notebook ran (whatever its cells did), 1 when it could not be run.
+        0 when a report was written.
     """
     ap = argparse.ArgumentParser(prog="python -m balancelab.course.runner")
     ap.add_argument("notebook")
-    ap.add_argument("--vars", default="")
+    ap.add_argument("--lab", required=True)
+    ap.add_argument("--student", default="")
+    ap.add_argument("--share", required=True)
     ap.add_argument("--cell-timeout", type=int, default=60)
+    ap.add_argument("--caps", default="{}")
+    ap.add_argument("--cgroup", default="{}")
+    ap.add_argument("--no-sandbox", action="store_true")
     args = ap.parse_args(argv)
-    variables = [v for v in args.vars.split(",") if v]
-    try:
-        res = run_notebook(args.notebook, variables, args.cell_timeout)
-    except Exception as e:  # the kernel could not start, the notebook could not be read
-        res = dict(status="error", answers={}, errors=[], notes=[f"execution failed: {type(e).__name__}: "
-                                                                   f"{str(e)[:160]}"])
-    print(RESULT_MARK + json.dumps(res), flush=True)
+    out = _private_channel()
+    _die_with_parent()
+
+    def emit(obj):
+        out.write(json.dumps(obj) + "\n")
+        out.flush()
+
+    _grade(dict(notebook=args.notebook, lab=args.lab, student=args.student, share=args.share,
+                cell_timeout=args.cell_timeout, caps=json.loads(args.caps), cgroup=json.loads(args.cgroup),
+                no_sandbox=args.no_sandbox), emit)
     return 0
 
 

@@ -1,11 +1,15 @@
 """Run an untrusted command in a sandbox with limits: what the grader does with each submission.
 
 On Linux with bubblewrap (``bwrap``; Debian: ``apt-get install bubblewrap``) the command runs
-as the unprivileged user ``nobody`` in new user, PID, IPC, UTS and network namespaces: the
-whole file system is read-only except its scratch folder (and a private, empty ``/tmp``, into
-which the grader's own Python and package are bound back read-only when they live there),
-there is no network (only a loopback of its own), and when the command ends or is killed
-every process it started dies with its PID namespace (a detached child included).
+as the unprivileged user ``nobody`` in new user, PID, IPC, UTS, cgroup and network namespaces
+and sees only what a Python kernel needs (:func:`kernel_binds`): the system's programs and
+libraries, this Python and its packages read-only, the ``balancelab`` package folder alone
+(not the checkout around it: no solutions, tests or book), a minimal ``/dev``, its own
+``/proc``, and size-capped in-memory ``/tmp``, ``/dev/shm`` and working folder. No home, no
+submissions, no host ``/tmp`` or its sockets, no network (only a loopback of its own), no
+environment variable of the grader; one host folder may be shared (the kernel's sockets).
+When the command ends or is killed every process it started dies with its PID namespace
+(a detached child included).
 
 Without bubblewrap the command runs in a process group of its own with resource limits
 (CPU time, file size, address space), and :func:`run_limited` warns once that submissions
@@ -24,7 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited",
-           "NO_SANDBOX_WARNING"]
+           "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK", "SHARE"]
 
 NO_SANDBOX_WARNING = ("no sandbox: bubblewrap (bwrap) is missing, does not work here or was turned off, so "
                       "submissions run as the grader's user with resource limits only and can read and write the grader's files; install it "
@@ -66,41 +70,99 @@ def sandbox_available() -> bool:
     if exe is None:
         return False
     try:
-        r = subprocess.run(sandbox_command(["true"], Path("/tmp")), capture_output=True, timeout=30)
+        r = subprocess.run(sandbox_command(["true"]), capture_output=True, timeout=30)
     except (OSError, subprocess.TimeoutExpired):
         return False
     return r.returncode == 0
 
 
-def _python_paths_in_tmp() -> list[str]:
-    """Folders under ``/tmp`` that this Python needs (its prefixes, its import path), outermost only.
-
-    The sandbox gives the command an empty ``/tmp`` of its own; a grader whose virtual
-    environment or checkout lives under ``/tmp`` (a CI runner's clone, say) is bound back
-    read-only so that the same interpreter and the same pristine package run inside.
-    """
-    tmp = Path("/tmp").resolve()
+def _python_roots() -> list[str]:
+    """Folders this Python needs: its prefixes and the folders on its import path, minus the
+    checkout (an editable install's repository root would show the solutions, tests and book:
+    only the package folder itself is bound, see :func:`kernel_binds`)."""
+    checkout = Path(__file__).resolve().parents[2]
     found = set()
-    for entry in [sys.prefix, sys.base_prefix, sys.exec_prefix, os.path.dirname(sys.executable),
-                  str(Path(__file__).resolve().parents[2]), *sys.path]:
+    prefixes = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
+    for entry in prefixes + list(sys.path):
         if not entry:
             continue
         path = Path(entry).resolve()
-        if path != tmp and tmp in path.parents and path.exists():
-            found.add(path)
+        inside = path == checkout or checkout in path.parents or path in checkout.parents
+        if not path.is_dir() or path == Path("/") or (inside and entry not in prefixes) or path == checkout:
+            continue
+        found.add(path)
     outer = [p for p in found if not any(q in p.parents for q in found)]
     return sorted(str(p) for p in outer)
 
 
-def sandbox_command(cmd: list[str], scratch: str | Path) -> list[str]:
-    """The bubblewrap command line that runs ``cmd`` with only ``scratch`` writable and no network.
+#: Files of ``/etc`` a Python kernel reads (the dynamic linker's cache, fonts for plots, the time zone).
+_ETC = ("/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/fonts", "/etc/localtime",
+        "/etc/mime.types", "/etc/matplotlibrc")
+
+
+def kernel_binds() -> list[str]:
+    """The read-only binds of the sandbox: the system's programs and libraries, this Python, its
+    packages and the ``balancelab`` package folder alone (never the checkout around it).
+
+    Returns
+    -------
+    list of str
+        bubblewrap arguments.
+
+    Examples
+    --------
+    >>> args = kernel_binds()
+    >>> import balancelab, pathlib
+    >>> str(pathlib.Path(balancelab.__file__).resolve().parent) in args
+    True
+    >>> "/home" in args or "/root" in args
+    False
+    """
+    import balancelab
+
+    out: list[str] = ["--ro-bind", "/usr", "/usr"]
+    for top in ("/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
+        p = Path(top)
+        if p.is_symlink():
+            out += ["--symlink", os.readlink(top), top]
+        elif p.is_dir():
+            out += ["--ro-bind", top, top]
+    for f in _ETC:
+        out += ["--ro-bind-try", f, f]
+    for root in _python_roots():
+        if not root.startswith("/usr/"):
+            out += ["--ro-bind", root, root]
+    pkg = str(Path(balancelab.__file__).resolve().parent)
+    return out + ["--ro-bind", pkg, pkg]
+
+
+#: The sandbox's working folder and home (a tmpfs of its own).
+WORK = "/home/student"
+#: Where the shared folder (the kernel's sockets) appears inside the sandbox (a short path: a unix
+#: socket's path has at most 107 bytes).
+SHARE = "/run/balancelab"
+
+
+def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
+                    env: dict | None = None) -> list[str]:
+    """The bubblewrap command line that runs ``cmd`` with nothing of the host but what a kernel needs.
+
+    The command sees the system's programs and libraries, this Python and its packages
+    (read-only, the ``balancelab`` package without the checkout around it), a minimal ``/dev``,
+    its own ``/proc``, and size-capped in-memory folders: ``/tmp``, ``/dev/shm`` and its working
+    folder and home :data:`WORK`. Nothing else: no home, no other ``/tmp``, no submissions,
+    no network (a loopback of its own), no host sockets except those in ``share``.
 
     Parameters
     ----------
     cmd : list of str
         The command.
-    scratch : str or Path
-        The only folder the command may write to (also its working folder and ``HOME``).
+    share : str or Path, optional
+        A host folder bound read-write at :data:`SHARE` (the kernel's sockets).
+    caps : Caps, optional
+        Sizes of the in-memory folders (:class:`~balancelab.course.caps.Caps`).
+    env : dict, optional
+        The command's whole environment (nothing of the grader's is passed on).
 
     Returns
     -------
@@ -108,17 +170,23 @@ def sandbox_command(cmd: list[str], scratch: str | Path) -> list[str]:
 
     Examples
     --------
-    >>> sandbox_command(["true"], "/tmp/x")[-1]
+    >>> sandbox_command(["true"])[-1]
     'true'
     """
-    scratch = str(Path(scratch).resolve())
-    keep: list[str] = []
-    for path in _python_paths_in_tmp():          # a grader installed under /tmp must stay visible
-        keep += ["--ro-bind", path, path]
-    return [bwrap_path() or "bwrap", "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
-            "--tmpfs", "/tmp", *keep, "--bind", scratch, scratch, "--unshare-all", "--unshare-user",
-            "--uid", "65534", "--gid", "65534", "--cap-drop", "ALL", "--die-with-parent", "--new-session",
-            "--chdir", scratch, "--setenv", "HOME", scratch, "--"] + list(cmd)
+    from .caps import Caps
+
+    caps = caps or Caps()
+    env = {"PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": WORK, "LANG": "C.UTF-8", **(env or {})}
+    shared = []
+    if share is not None:
+        shared = ["--bind", str(Path(share).resolve()), SHARE]
+    setenv = [x for k, v in env.items() for x in ("--setenv", k, str(v))]
+    return [bwrap_path() or "bwrap", "--dev", "/dev", "--proc", "/proc",
+            "--size", str(caps.tmp), "--tmpfs", "/tmp", "--size", str(caps.shm), "--tmpfs", "/dev/shm",
+            "--size", str(caps.work), "--tmpfs", WORK, *kernel_binds(), *shared,
+            "--unshare-all", "--unshare-user", "--uid", "65534", "--gid", "65534", "--hostname", "sandbox",
+            "--cap-drop", "ALL", "--die-with-parent", "--new-session", "--clearenv", *setenv,
+            "--chdir", WORK, "--"] + list(cmd)
 
 
 @dataclass
@@ -149,20 +217,28 @@ class RunResult:
     sandboxed: bool
 
 
-#: A tiny program that sets the resource limits and then becomes the command (no ``preexec_fn``,
-#: which is not safe when the grader runs several jobs in threads).
-_LIMITED = ("import os, resource, sys\n"
-            "for name, value in (('RLIMIT_CPU', int(sys.argv[1])), ('RLIMIT_FSIZE', int(sys.argv[2])),\n"
-            "                    ('RLIMIT_AS', int(sys.argv[3])), ('RLIMIT_CORE', 0)):\n"
-            "    try:\n"
-            "        resource.setrlimit(getattr(resource, name), (value, value))\n"
-            "    except (ValueError, OSError):\n"
-            "        pass\n"
-            "os.execvp(sys.argv[4], sys.argv[4:])\n")
+def limited(cmd: list[str], cpu_seconds: int, file_size: int = FILE_LIMIT, memory: int = MEMORY_LIMIT,
+            processes: int = -1) -> list[str]:
+    """``cmd`` run under resource limits (:data:`~balancelab.course.caps.LIMITER`; -1: unchanged).
 
+    Parameters
+    ----------
+    cmd : list of str
+    cpu_seconds, file_size, memory, processes : int
+        ``RLIMIT_CPU``, ``RLIMIT_FSIZE``, ``RLIMIT_AS`` and ``RLIMIT_NPROC``.
 
-def _limited(cmd: list[str], cpu_seconds: int) -> list[str]:
-    return [sys.executable, "-c", _LIMITED, str(cpu_seconds), str(FILE_LIMIT), str(MEMORY_LIMIT)] + list(cmd)
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> limited(["true"], 10)[-1]
+    'true'
+    """
+    from .caps import LIMITER
+
+    return [sys.executable, "-c", LIMITER, str(cpu_seconds), str(file_size), str(memory), str(processes)] + list(cmd)
 
 
 def _kill_group(pgid: int) -> None:
@@ -202,8 +278,8 @@ def run_limited(cmd: list[str], scratch: str | Path, timeout: float, env: dict |
     use = sandbox_available() if sandbox is None else sandbox
     if not use:
         warnings.warn(NO_SANDBOX_WARNING, RuntimeWarning, stacklevel=2)
-    limited = _limited(cmd, int(timeout) + 30)
-    full = sandbox_command(limited, scratch) if use else limited
+    lim = limited(cmd, int(timeout) + 30)
+    full = sandbox_command(lim, env=env) if use else lim
     proc = subprocess.Popen(full, cwd=str(scratch), env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, start_new_session=True, text=True, errors="replace")
     timed_out = False

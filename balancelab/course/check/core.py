@@ -200,6 +200,9 @@ lab_tasks = tasks
 
 
 _STUDENT = {"id": ""}
+#: How many times :func:`check` ran on each task in this kernel (exported with the answers; the
+#: grade table reports it per task, as the notebook's kernel counted it).
+ATTEMPTS: dict[str, int] = {}
 
 
 def set_student(student_id: str) -> None:
@@ -295,7 +298,8 @@ def check(task_id: str, answer: Any) -> Verdict:
     -------
     Verdict
         Prints as a one-line verdict with a hint; ``bool(verdict)`` is whether it is right.
-        Never raises for a malformed answer.
+        Never raises for a malformed answer. Each call is counted (:data:`ATTEMPTS`): the
+        grade table shows how many checks a notebook ran per task.
 
     Examples
     --------
@@ -305,6 +309,9 @@ def check(task_id: str, answer: Any) -> Verdict:
     Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
       Hint: Store a plain number in m or a string such as '2.5 m'.
     """
+    key = str(task_id)
+    if key in _TASKS:
+        ATTEMPTS[key] = ATTEMPTS.get(key, 0) + 1
     return check_data(task_id, encode_answer(answer))
 
 

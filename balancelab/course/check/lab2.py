@@ -46,8 +46,8 @@ def lab2_lever(k: float, a, b, *, W: float | None = None, l: float | None = None
 
     Examples
     --------
-    >>> lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2)).balance_report().balanced
-    True
+    >>> lab2_lever(100.0, (0.3, 0.0), (0.0, 0.2)).springs[0].k
+    100.0
     """
     W = LAB2_LEVER["weight"] if W is None else W
     l = LAB2_LEVER["length"] if l is None else l

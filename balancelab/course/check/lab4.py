@@ -36,8 +36,8 @@ def lab4_singh_arm(a_x=None) -> Design:
 
     Examples
     --------
-    >>> lab4_singh_arm((1.6, 1.6, -1.6)).balance_report().balanced
-    True
+    >>> lab4_singh_arm().bodies
+    ('ground', 'body 1', 'body 2')
     """
     s = LAB4_SINGH
     extra = {} if a_x is None else {"a_x": tuple(a_x)}

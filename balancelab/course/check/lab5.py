@@ -32,8 +32,8 @@ def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
 
     Examples
     --------
-    >>> lab5_technique2("A", 0.15).balance_report().balanced
-    True
+    >>> lab5_technique2("B", 0.3).bodies
+    ('ground', 'crank', 'coupler', 'rocker')
     """
     p = LAB5_TECHNIQUE2
     return technique2(example_fourbar(), p["K"], p["k_l"], base, h)

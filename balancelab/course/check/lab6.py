@@ -31,8 +31,8 @@ def lab6_scissors(free_length: float, k1: float | None = None, k2: float | None 
 
     Examples
     --------
-    >>> lab6_scissors(0.42).balance_report().balanced
-    True
+    >>> lab6_scissors(0.3).bodies[:3]
+    ('ground', 'arm 2', 'arm 3')
     """
     p = LAB6_SCISSORS
     d = scissors_lift(length=p["length"], payload_mass=p["payload_mass"], free_length=free_length)

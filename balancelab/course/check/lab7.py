@@ -156,10 +156,9 @@ def lamp_with_springs(springs) -> Design:
 
     Examples
     --------
-    >>> d = lamp_with_springs([(183.9375, ("ground", (0.0, 0.2)), ("link 1", (0.2, 0.0))),
-    ...                        (122.625, ("ground", (0.0, 0.2)), ("copy of link 2", (0.1, 0.0)))])
-    >>> d.balance_report().balanced
-    True
+    >>> d = lamp_with_springs([(100.0, ("ground", (0.0, 0.2)), ("link 1", (0.2, 0.0)))])
+    >>> len(d.springs), d.balance_report().balanced
+    (1, False)
     """
     lamp = parallelogram_lamp()
     built = []

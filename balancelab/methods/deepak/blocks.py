@@ -312,7 +312,7 @@ def balanced_plagiograph(a: float, b: float, m: float, alpha: float, K: Point, k
 
     Examples
     --------
-    >>> d = balanced_plagiograph(0.2, 0.3, 1.5, 0.4, (0.1, -0.3), 80.0, 0.1)
+    >>> d = balanced_plagiograph(0.2, 0.3, 1.5, 0.4, (0.1, -0.3), 50.0, 0.1)
     >>> d.balance_report().balanced
     True
     """

@@ -1,0 +1,283 @@
+"""Taking in submissions: which files are graded, how they are read, whose they are, which lab.
+
+* :func:`find_submissions` lists every ``*.ipynb`` under a folder without following links;
+* :func:`read_regular` opens one without following a link, only if it is a regular file, and
+  reads at most a size cap (a FIFO, a device or a link to ``/dev/zero`` is refused, not read);
+* :func:`identity` says whose a submission is: from the roster (``--roster``: a CSV with the
+  columns ``file`` and ``student_id``) or from the file name (:data:`ID_PATTERN`), never from
+  the notebook;
+* :func:`resolve_lab` says which lab it is, :func:`cheat_notes` what its code replaces.
+"""
+from __future__ import annotations
+
+import ast
+import csv
+import os
+import re
+import stat
+from pathlib import Path
+
+from .gradetable import excerpt
+
+__all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "read_roster", "identity",
+           "resolve_lab", "cheat_notes"]
+
+#: Largest notebook file read (bytes).
+MAX_NOTEBOOK = 20 * 2 ** 20
+#: The student id in a file name: ``ID_labN.ipynb`` or ``ID/labN....ipynb`` (letters, digits, ``.-``).
+ID_PATTERN = re.compile(r"^(?P<id>[A-Za-z0-9][A-Za-z0-9.\-]{0,62})_lab\d+(?:_[^/]*)?\.ipynb$")
+_DIR_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9.\-_]{0,62}$")
+
+
+def find_submissions(folder: str | Path) -> list[Path]:
+    """Every ``*.ipynb`` under ``folder`` (checkpoints skipped), links included but never followed.
+
+    Parameters
+    ----------
+    folder : str or Path
+
+    Returns
+    -------
+    list of Path
+        Sorted; a link (to a file or a folder) is listed as itself so that it gets a row.
+
+    Examples
+    --------
+    >>> find_submissions("/nonexistent-folder")
+    []
+    """
+    found = []
+    for root, dirs, files in os.walk(folder, followlinks=False):
+        keep = []
+        for d in dirs:
+            if os.path.islink(os.path.join(root, d)):   # listed (a row says it is refused), never entered
+                files.append(d)
+            elif d != ".ipynb_checkpoints":
+                keep.append(d)
+        dirs[:] = keep
+        found += [Path(root) / f for f in files if f.endswith(".ipynb")]
+    return sorted(found)
+
+
+def read_regular(path: str | Path, cap: int = MAX_NOTEBOOK) -> bytes:
+    """The bytes of a regular file, opened without following a link and without blocking.
+
+    Parameters
+    ----------
+    path : str or Path
+    cap : int
+        Largest size read (bytes).
+
+    Returns
+    -------
+    bytes
+
+    Raises
+    ------
+    PermissionError
+        If ``path`` is a link, or not a regular file (a FIFO, a device, a folder), or larger than ``cap``.
+
+    Examples
+    --------
+    >>> read_regular("/dev/zero")
+    Traceback (most recent call last):
+    ...
+    PermissionError: not a regular file (a character device)
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC)
+    except OSError as e:
+        if os.path.islink(path):
+            raise PermissionError("a symbolic link (only regular files are graded)") from e
+        raise
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            kinds = {stat.S_ISCHR: "a character device", stat.S_ISBLK: "a block device",
+                     stat.S_ISFIFO: "a FIFO", stat.S_ISSOCK: "a socket", stat.S_ISDIR: "a folder"}
+            kind = next((v for k, v in kinds.items() if k(st.st_mode)), "not a file")
+            raise PermissionError(f"not a regular file ({kind})")
+        if st.st_size > cap:
+            raise PermissionError(f"larger than {cap // 2 ** 20} MB")
+        data = os.read(fd, cap + 1)
+        chunks = [data]
+        while data and sum(map(len, chunks)) <= cap:
+            data = os.read(fd, cap + 1)
+            chunks.append(data)
+        out = b"".join(chunks)
+        if len(out) > cap:
+            raise PermissionError(f"larger than {cap // 2 ** 20} MB")
+        return out
+    finally:
+        os.close(fd)
+
+
+def read_roster(path: str | Path) -> dict[str, str]:
+    """A roster: submission file (its path in the folder, or its name) -> student id.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV with the columns ``file`` and ``student_id``.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    ValueError
+        If a column is missing or a file is listed twice.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> p = pathlib.Path(tempfile.mkdtemp()) / "roster.csv"
+    >>> _ = p.write_text("file,student_id\\nalice_lab2.ipynb,s1001\\n")
+    >>> read_roster(p)
+    {'alice_lab2.ipynb': 's1001'}
+    """
+    out: dict[str, str] = {}
+    with Path(path).open(newline="", encoding="utf-8") as f:
+        reader = csv.DictReader(f)
+        if not reader.fieldnames or not {"file", "student_id"} <= set(reader.fieldnames):
+            raise ValueError(f"roster {path} must have the columns 'file' and 'student_id'")
+        for rec in reader:
+            name, sid = (rec.get("file") or "").strip(), (rec.get("student_id") or "").strip()
+            if not name or not sid:
+                continue
+            if name in out:
+                raise ValueError(f"roster {path} lists {name!r} twice")
+            out[name] = sid
+    return out
+
+
+def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
+    """Whose a submission is, and how that was found: from the roster, else from the file name.
+
+    Parameters
+    ----------
+    rel : str
+        The submission's path in the graded folder (``"alice_lab2.ipynb"``, ``"s12/lab2.ipynb"``).
+    roster : dict or None
+        :func:`read_roster`'s result.
+
+    Returns
+    -------
+    (str, str)
+        The id (``""`` when unknown) and its source (``"roster"``, ``"file name"`` or a note).
+
+    Examples
+    --------
+    >>> identity("alice_lab2.ipynb", None)
+    ('alice', 'file name')
+    >>> identity("s1234/lab2.ipynb", None)
+    ('s1234', 'file name')
+    >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "m77"})
+    ('m77', 'roster')
+    >>> identity("lab1.ipynb", None)[0]
+    ''
+    """
+    rel = rel.replace(os.sep, "/")
+    if roster is not None:
+        sid = roster.get(rel) or roster.get(rel.rsplit("/", 1)[-1])
+        return (sid, "roster") if sid else ("", "not in the roster")
+    parts = rel.split("/")
+    m = ID_PATTERN.match(parts[-1])
+    if m:
+        return m.group("id"), "file name"
+    if len(parts) >= 2 and _DIR_ID.match(parts[-2]) and re.match(r"^lab\d+", parts[-1]):
+        return parts[-2], "file name"
+    return "", "the file name does not match ID_labN.ipynb or ID/labN.ipynb"
+
+
+def _norm_lab(lab) -> str | None:
+    if not isinstance(lab, (str, int)) or str(lab).strip() == "":
+        return None
+    m = re.fullmatch(r"(?:lab)?\s*(\d{1,3})", str(lab).strip(), re.IGNORECASE)
+    return f"lab{int(m.group(1))}" if m else f"unreadable ({excerpt(lab, 20)})"
+
+
+def resolve_lab(nb: dict, path: Path, lab: str | None = None) -> tuple[str | None, str]:
+    """The lab of a notebook and what disagrees about it.
+
+    ``--lab`` wins, then the notebook's ``balancelab.lab`` metadata, then ``labN`` in the
+    file name; every source that names another lab is reported.
+
+    Parameters
+    ----------
+    nb : dict
+        The notebook.
+    path : Path
+        Its file.
+    lab : str, optional
+        The lab forced on the command line.
+
+    Returns
+    -------
+    (str or None, str)
+        The lab (None if unknown) and the mismatch text (empty if all sources agree).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> resolve_lab({"metadata": {"balancelab": {"lab": "lab5"}}}, Path("ann_lab1.ipynb"))
+    ('lab5', 'file name says lab1, metadata says lab5')
+    """
+    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
+    from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
+    m = re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE)
+    from_name = f"lab{int(m.group(1))}" if m else None
+    forced = _norm_lab(lab)
+    sources = [("file name", from_name), ("metadata", from_meta), ("--lab", forced)]
+    named = {v for _, v in sources if v}
+    mismatch = ", ".join(f"{k} says {v}" for k, v in sources if v) if len(named) > 1 else ""
+    return forced or from_meta or from_name, mismatch
+
+
+_PATCH_NAMES = {"check", "check_data", "grade_answers", "grade_namespace", "balance_report", "judge", "Verdict",
+                "print", "dumps"}
+
+
+def cheat_notes(nb) -> list[str]:
+    """What the notebook's code replaces that the grader ignores anyway (reported, never trusted).
+
+    Parameters
+    ----------
+    nb : dict
+        The notebook.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> cheat_notes({"cells": [{"cell_type": "code", "source": "import json\\njson.dumps = str"}]})
+    ['the notebook replaces `dumps`: ignored (the grader checks the exported answers itself)']
+    """
+    found = set()
+    for cell in nb.get("cells", []):
+        if cell.get("cell_type") != "code":
+            continue
+        src = cell.get("source", "")
+        src = src if isinstance(src, str) else "".join(src)
+        try:
+            tree = ast.parse("\n".join(ln for ln in src.splitlines() if not ln.lstrip().startswith(("%", "!"))))
+        except SyntaxError:
+            continue
+        for node in ast.walk(tree):
+            targets = (node.targets if isinstance(node, ast.Assign) else [node.target]
+                       if isinstance(node, (ast.AugAssign, ast.AnnAssign)) else [])
+            for t in targets:
+                name = t.id if isinstance(t, ast.Name) else t.attr if isinstance(t, ast.Attribute) else None
+                if name in _PATCH_NAMES:
+                    found.add(f"replaces `{name}`")
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name in _PATCH_NAMES:
+                found.add(f"redefines `{node.name}`")
+            if isinstance(node, ast.ClassDef) and any("Design" in ast.unparse(b) or "Verdict" in ast.unparse(b)
+                                                      for b in node.bases):
+                found.add(f"subclasses {excerpt(', '.join(ast.unparse(b) for b in node.bases), 40)}")
+    if not found:
+        return []
+    return [f"the notebook {', '.join(sorted(found))}: ignored (the grader checks the exported answers itself)"]

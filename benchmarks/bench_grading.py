@@ -1,0 +1,58 @@
+"""Grading throughput: seconds per notebook for a class of lab-1 submissions, sandboxed, ``--jobs 2``.
+
+``python benchmarks/bench_grading.py [N]`` grades N (default 20) copies of lab 1 (half the
+solution, half the untouched student version), each under a file name of its own (so each is
+judged with its own personal numbers), and prints the wall time per notebook, the machine's
+load average before and after, and the median of the rows' own ``seconds`` and ``peak_mb``.
+Target: at most 3 s per notebook on 2 cores (an otherwise idle machine).
+"""
+from __future__ import annotations
+
+import csv
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def grade_class(n: int = 20, jobs: int = 2) -> dict:
+    """Grade ``n`` lab-1 notebooks; wall time per notebook and what the rows say."""
+    lab1 = sorted((ROOT / "labs" / "solutions").glob("lab1*.ipynb"))[0]
+    with tempfile.TemporaryDirectory(prefix="bench-grading-") as tmp:
+        sub = Path(tmp) / "submissions"
+        sub.mkdir()
+        for i in range(n):
+            src = lab1 if i % 2 == 0 else ROOT / "labs" / "student" / lab1.name
+            shutil.copy(src, sub / f"s{i:04d}_lab1.ipynb")
+        out = Path(tmp) / "grades.csv"
+        load = os.getloadavg()[0]
+        t = time.perf_counter()
+        proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
+                               "--jobs", str(jobs)], capture_output=True, text=True, cwd=ROOT)
+        elapsed = time.perf_counter() - t
+        rows = list(csv.DictReader(out.open(encoding="utf-8"))) if out.exists() else []
+    seconds = [float(r["seconds"]) for r in rows if r.get("seconds")]
+    peaks = [float(r["peak_mb"]) for r in rows if r.get("peak_mb")]
+    return dict(ok=proc.returncode == 0 and len(rows) == n, per_notebook=elapsed / n, load_before=load,
+                load_after=os.getloadavg()[0], median_row_seconds=statistics.median(seconds) if seconds else None,
+                median_peak_mb=statistics.median(peaks) if peaks else None,
+                statuses=sorted({r["status"] for r in rows}))
+
+
+def run() -> list[tuple[str, float, str, str]]:
+    """Rows ``(name, measured, unit, target)`` for ``benchmarks/run.py``."""
+    r = grade_class()
+    name = f"grade 20 lab-1 notebooks, --jobs 2 (load {r['load_before']:.1f})" + ("" if r["ok"] else " (FAILED)")
+    return [(name, r["per_notebook"], "s", "<= 3 s per notebook on 2 idle cores")]
+
+
+if __name__ == "__main__":
+    result = grade_class(int(sys.argv[1]) if sys.argv[1:] else 20)
+    for key, value in result.items():
+        print(f"{key:20s} {value}")
