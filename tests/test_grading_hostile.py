@@ -543,9 +543,9 @@ def test_a_runner_that_dies_gives_error_and_zero(tmp_path):
     worker = threading.Thread(target=lambda: rows.append(grading.grade_notebook(path, cell_timeout=200,
                                                                                  notebook_timeout=300)))
     worker.start()
-    assert _wait(lambda: bool(grading._ACTIVE), 120)
+    assert _wait(lambda: bool(grading.ACTIVE), 120)
     time.sleep(15)  # the first answer has been exported by now (the kernel sleeps in the next cell)
-    for pid in list(grading._ACTIVE):
+    for pid in list(grading.ACTIVE):
         os.kill(pid, signal.SIGKILL)
     worker.join(120)
     row = rows[0]

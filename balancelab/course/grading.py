@@ -56,7 +56,7 @@ from .gradetable import GradeRow, RowWriter, excerpt, merge_csv, read_csv, summa
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
                      resolve_lab)
 from .sandbox import NO_SANDBOX_WARNING, sandbox_available
-from .workers import _ACTIVE, SCRATCH_PREFIX, _forked_runner, _remove, _scratch_root, _stop, clean_stale  # noqa: F401
+from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
            "grade_folder", "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
@@ -155,14 +155,14 @@ def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps
     job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
                caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
                scratch=str(scratch))
-    lines, ended, _ = _forked_runner(job, wall, int(wall) + 30)
+    lines, ended, _ = forked_runner(job, wall, int(wall) + 30)
     return lines, ended, cgroup
 
 
 def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeout: int,
          sandbox: bool, caps: Caps):
     """Run and judge one notebook; ``(status, results, notes, extra)`` (results: task id -> dict)."""
-    scratch = Path(tempfile.mkdtemp(prefix=f"{SCRATCH_PREFIX}{os.getpid()}-", dir=_scratch_root()))
+    scratch = Path(tempfile.mkdtemp(prefix=f"{SCRATCH_PREFIX}{os.getpid()}-", dir=scratch_root()))
     cgroup = None
     try:
         copy = scratch / "submission.ipynb"
@@ -195,7 +195,7 @@ def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeo
     finally:
         if cgroup is not None:
             cgroup.remove()
-        _remove(scratch)
+        remove_tree(scratch)
 
 
 def _refused(student: str, why: str) -> GradeRow:
@@ -462,7 +462,7 @@ def main(argv: list[str] | None = None) -> int:
             raise FileNotFoundError(f"no such folder: {args.folder[0]}")
         if threading.current_thread() is threading.main_thread():
             for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
-                signal.signal(sig, _stop)
+                signal.signal(sig, stop_on_signal)
         rows = grade_folder(args.folder[0], lab=args.lab, cell_timeout=args.cell_timeout,
                             notebook_timeout=args.notebook_timeout, progress=True, jobs=args.jobs,
                             shard_spec=args.shard, sandbox=False if args.no_sandbox else None, roster=roster,

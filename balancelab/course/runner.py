@@ -227,6 +227,69 @@ def _lock(share: Path) -> bool:
         return False
 
 
+def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int, cgroup: Cgroup,
+               errors: list, notes: list, full: dict) -> tuple[dict, str]:
+    """Run the code cells one by one, each followed by the export probe with a fresh nonce; returns the
+    last exported answers and the status (``graded``, ``timeout``, ``kernel died`` or ``error``)."""
+    import nbformat
+    from nbclient.exceptions import CellTimeoutError, DeadKernelError
+
+    answers, status = {}, "graded"
+    for i, cell in enumerate(cells):
+        if cell.cell_type != "code":
+            continue
+        nonce = secrets.token_hex(16)
+        probe = nbformat.v4.new_code_cell(export_source(variables, nonce), metadata={"export": True})
+        try:
+            nb.cells[0] = cell
+            client.execute_cell(cell, 0)
+            errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
+                       + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
+                       for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
+            cell.outputs = []
+            nb.cells[0] = probe
+            client.execute_cell(probe, 0)
+        except CellTimeoutError:
+            status = "timeout"
+            notes.append(f"cell {i} ran past the {cell_timeout} s cell limit and did not stop within "
+                         f"{INTERRUPT_GRACE:g} s of the interrupt (a loop that ignores interrupts, or a "
+                         "long computation in compiled code): its kernel was killed; the answers given "
+                         "before it are graded")
+            break
+        except DeadKernelError:
+            status = "kernel died"
+            hit = cgroup.hits()
+            notes.append(f"the kernel died in cell {i}" + (f" at the {' and '.join(hit)} cap" if hit else "")
+                         + "; the answers given before it are graded")
+            break
+        except Exception as e:  # the kernel sent what the runner cannot read (a patched kernel)
+            status = "error"
+            notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
+                         "the answers given before it are graded")
+            break
+        found = _exported(probe, nonce)
+        if found is not None:
+            fs = found.pop("__fs__", None)
+            for p, used in (fs.items() if isinstance(fs, dict) else []):
+                if isinstance(used, float) and used > full.get(p, 0.0):
+                    full[p] = used
+            answers = found
+    return answers, status
+
+
+def _cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
+    """Add a row note (and a hit) for every cap the submission reached."""
+    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
+    for p, used in sorted(full.items()):
+        if used >= 0.98 and p in sizes:
+            hits.append(p)
+            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
+    if "memory" in hits:
+        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
+    if "processes" in hits:
+        notes.append(f"the process cap ({caps.processes} at once) was reached")
+
+
 def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
                  caps: Caps | None = None, sandbox: bool = True, cgroup: Cgroup | None = None) -> dict:
     """Execute a notebook cell by cell in a sandboxed kernel, exporting the answers after each cell.
@@ -254,7 +317,6 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         ``{"status", "answers", "attempts", "errors", "notes", "peak", "hits"}``.
     """
     import nbformat
-    from nbclient.exceptions import CellTimeoutError, DeadKernelError
 
     global SandboxKernelManager
     SandboxKernelManager = SandboxKernelManager or _kernel_manager_class()
@@ -269,7 +331,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     client = _client_class(caps.output)(nb, km=km, timeout=cell_timeout, allow_errors=True,
                                         interrupt_on_timeout=True, shutdown_kernel="immediate",
                                         startup_timeout=120)
-    answers, errors, notes, status, full = {}, [], [], "graded", {}
+    answers, errors, notes, status, full = {}, [], [], "error", {}
     if not cgroup.dirs:
         notes.append("caps: the memory of the process tree and the process count are enforced per process "
                      "only (no cgroup here)")
@@ -277,45 +339,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         with client.setup_kernel(stdout=open(os.devnull, "wb"), stderr=open(os.devnull, "wb")):
             if sandbox and not _lock(share):
                 notes.append("caps: the socket folder stays writable (not root): disk use there is capped per file only")
-            for i, cell in enumerate(cells):
-                if cell.cell_type != "code":
-                    continue
-                nonce = secrets.token_hex(16)
-                probe = nbformat.v4.new_code_cell(export_source(variables, nonce), metadata={"export": True})
-                try:
-                    nb.cells[0] = cell
-                    client.execute_cell(cell, 0)
-                    errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
-                               + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
-                               for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
-                    cell.outputs = []
-                    nb.cells[0] = probe
-                    client.execute_cell(probe, 0)
-                except CellTimeoutError:
-                    status = "timeout"
-                    notes.append(f"cell {i} ran past the {cell_timeout} s cell limit and did not stop within "
-                                 f"{INTERRUPT_GRACE:g} s of the interrupt (a loop that ignores interrupts, or a "
-                                 "long computation in compiled code): its kernel was killed; the answers given "
-                                 "before it are graded")
-                    break
-                except DeadKernelError:
-                    status = "kernel died"
-                    hit = cgroup.hits()
-                    notes.append(f"the kernel died in cell {i}" + (f" at the {' and '.join(hit)} cap" if hit else "")
-                                 + "; the answers given before it are graded")
-                    break
-                except Exception as e:  # the kernel sent what the runner cannot read (a patched kernel)
-                    status = "error"
-                    notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
-                                 "the answers given before it are graded")
-                    break
-                found = _exported(probe, nonce)
-                if found is not None:
-                    fs = found.pop("__fs__", None)
-                    for p, used in (fs.items() if isinstance(fs, dict) else []):
-                        if isinstance(used, float) and used > full.get(p, 0.0):
-                            full[p] = used
-                    answers = found
+            answers, status = _run_cells(client, nb, cells, variables, cell_timeout, cgroup, errors, notes, full)
     finally:
         peak, hits = cgroup.peak(), cgroup.hits()
         cgroup.kill()
@@ -328,15 +352,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         hits.append("output")
         notes.append(f"output cap: {client.dropped / 2 ** 20:.1f} MB of output beyond {caps.output / 2 ** 20:g} MB "
                      "were dropped")
-    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
-    for p, used in sorted(full.items()):
-        if used >= 0.98 and p in sizes:
-            hits.append(p)
-            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
-    if "memory" in hits:
-        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
-    if "processes" in hits:
-        notes.append(f"the process cap ({caps.processes} at once) was reached")
+    _cap_notes(caps, full, hits, notes)
     return dict(status=status, answers=answers, attempts=attempts if isinstance(attempts, dict) else {},
                 errors=errors, notes=notes, peak=peak, hits=hits)
 

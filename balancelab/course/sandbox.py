@@ -118,8 +118,6 @@ def kernel_binds() -> list[str]:
     >>> "/home" in args or "/root" in args
     False
     """
-    import balancelab
-
     out: list[str] = ["--ro-bind", "/usr", "/usr"]
     for top in ("/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"):
         p = Path(top)
@@ -132,7 +130,7 @@ def kernel_binds() -> list[str]:
     for root in _python_roots():
         if not root.startswith("/usr/"):
             out += ["--ro-bind", root, root]
-    pkg = str(Path(balancelab.__file__).resolve().parent)
+    pkg = str(Path(__file__).resolve().parents[1])  # the balancelab package folder
     return out + ["--ro-bind", pkg, pkg]
 
 

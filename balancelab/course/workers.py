@@ -1,10 +1,10 @@
 """The grader's workers: one runner per notebook, forked from a server that imported everything once.
 
-:func:`_forked_runner` forks a runner (:func:`balancelab.course.runner.serve`) from a
+:func:`forked_runner` forks a runner (:func:`balancelab.course.runner.serve`) from a
 :mod:`multiprocessing` forkserver that preloaded the runner, the checks and nbclient, reads its
 report lines from a pipe only it holds, and kills its process group at the wall-clock limit.
-Every runner alive is registered (:data:`_ACTIVE`) so that a grader that is stopped kills them and
-deletes their scratch folders (:func:`_stop`); :func:`clean_stale` deletes the scratch folders of
+Every runner alive is registered (:data:`ACTIVE`) so that a grader that is stopped kills them and
+deletes their scratch folders (:func:`stop_on_signal`); :func:`clean_stale` deletes the scratch folders of
 graders that were killed outright.
 """
 from __future__ import annotations
@@ -21,15 +21,15 @@ from pathlib import Path
 
 from .caps import Cgroup
 
-__all__ = ["SCRATCH_PREFIX", "clean_stale"]
+__all__ = ["ACTIVE", "SCRATCH_PREFIX", "clean_stale", "forked_runner", "remove_tree", "scratch_root", "stop_on_signal"]
 
 SCRATCH_PREFIX = "balancelab-grade-"
 #: Runners and scratch folders alive now (killed and removed if the grader is stopped).
-_ACTIVE: dict[int, tuple[object, Path, Cgroup]] = {}
-_ACTIVE_LOCK = threading.Lock()
+ACTIVE: dict[int, tuple[object, Path, Cgroup]] = {}
+ACTIVE_LOCK = threading.Lock()
 
 
-def _scratch_root() -> Path:
+def scratch_root() -> Path:
     return Path(os.environ.get("BALANCELAB_SCRATCH") or tempfile.gettempdir())
 
 
@@ -52,15 +52,15 @@ def clean_stale(root: Path | None = None) -> list[Path]:
     True
     """
     gone = []
-    for p in (root or _scratch_root()).glob(SCRATCH_PREFIX + "*"):
+    for p in (root or scratch_root()).glob(SCRATCH_PREFIX + "*"):
         pid = p.name[len(SCRATCH_PREFIX):].split("-", 1)[0]
         if pid.isdigit() and not Path(f"/proc/{pid}").exists() and p.is_dir() and not p.is_symlink():
-            _remove(p)
+            remove_tree(p)
             gone.append(p)
     return gone
 
 
-def _remove(folder: Path) -> None:
+def remove_tree(folder: Path) -> None:
     """Delete a scratch folder (a process of the sandbox that is still dying may write for a moment)."""
     for _ in range(50):
         shutil.rmtree(folder, ignore_errors=True)
@@ -96,13 +96,13 @@ def _context():
 
 
 class _Forked:
-    """A forked runner seen like a Popen (pid, kill, returncode) for :func:`_stop`."""
+    """A forked runner seen like a Popen (pid, kill, returncode) for :func:`stop_on_signal`."""
 
     def __init__(self, process):
         self.process, self.pid = process, process.pid
 
 
-def _forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, int | None]:
+def forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, int | None]:
     """Grade one notebook in a runner forked from the warm server; report lines and how it ended."""
     from .runner import serve
 
@@ -112,8 +112,8 @@ def _forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, i
     proc.start()
     send.close()
     handle = _Forked(proc)
-    with _ACTIVE_LOCK:
-        _ACTIVE[proc.pid] = (handle, Path(job["scratch"]), Cgroup.attach(job.get("cgroup", {})))
+    with ACTIVE_LOCK:
+        ACTIVE[proc.pid] = (handle, Path(job["scratch"]), Cgroup.attach(job.get("cgroup", {})))
     lines, ended, deadline = [], "", time.monotonic() + wall
     try:
         while True:
@@ -140,8 +140,8 @@ def _forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, i
         _kill(handle)
         proc.join(10)
         recv.close()
-        with _ACTIVE_LOCK:
-            _ACTIVE.pop(proc.pid, None)
+        with ACTIVE_LOCK:
+            ACTIVE.pop(proc.pid, None)
     code = proc.exitcode
     if not ended and not any(x.get("done") for x in lines) and code:
         ended = (f"the runner was killed by signal {-code}" if code < 0 else f"the runner exited with code {code}")
@@ -149,12 +149,12 @@ def _forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, i
 
 
 
-def _stop(signum, frame):
+def stop_on_signal(signum, frame):
     """The grader is stopped: kill every runner, delete every scratch folder, keep the rows written."""
-    with _ACTIVE_LOCK:
-        active = list(_ACTIVE.values())
+    with ACTIVE_LOCK:
+        active = list(ACTIVE.values())
     for proc, scratch, cgroup in active:
         _kill(proc)
         cgroup.remove()
-        _remove(scratch)
+        remove_tree(scratch)
     os._exit(128 + signum)

@@ -71,7 +71,7 @@ def column_norms(p: Problem) -> np.ndarray:
     return np.where(dead, top, D)
 
 
-def _constraints(p: Problem, S: np.ndarray):
+def lp_constraints(p: Problem, S: np.ndarray):
     """Bounds and box inequalities on the scaled variables ``y = x / S``."""
     n = p.nvar
     bounds = [(None, None)] * n
@@ -232,7 +232,7 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
     sigma = max(np.linalg.norm(p.v), 1e-300)
     eq = (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma)
     S = sigma / D  # x = S y
-    bounds, A_ub, b_ub = _constraints(p, S)
+    bounds, A_ub, b_ub = lp_constraints(p, S)
     c = _cost(p, objective)
     convex = objective == "min_preload" and any(b.free is not None and b.kind == "spring" for b in p.blocks)
     start = _cost(p, "min_stiffness") if convex else c  # the linear part alone is unbounded with free points

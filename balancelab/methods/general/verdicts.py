@@ -154,14 +154,14 @@ def _wider(p: Problem, D: np.ndarray):
 def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
     from scipy.optimize import linprog
 
-    from .solver import _constraints
+    from .solver import lp_constraints
 
     boxes = [b.box for b in p.blocks]
     try:
         for b in p.blocks:
             b.box = ((-w, w), (-w, w))
         S = sigma / D
-        bounds, A_ub, b_ub = _constraints(p, S)
+        bounds, A_ub, b_ub = lp_constraints(p, S)
     finally:
         for b, box in zip(p.blocks, boxes):
             b.box = box
