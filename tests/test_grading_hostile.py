@@ -64,7 +64,14 @@ SNOOP = """import balancelab, os, pathlib, sys
 root = pathlib.Path(balancelab.__file__).resolve().parents[1]
 seen = [str(p) for p in [root / "labs" / "solutions", root / "labs", root / "tests", root / "book", root / ".git",
         pathlib.Path({sub!r}), pathlib.Path({home!r}), pathlib.Path({host!r}),
-        pathlib.Path("/etc/os-release"), pathlib.Path("/etc/passwd"), pathlib.Path("/work/main")] if p.exists()]
+        pathlib.Path("/etc/os-release"), pathlib.Path("/etc/passwd"), pathlib.Path("/work/main/labs"),
+        pathlib.Path("/work/main/.git")] if p.exists()]
+# a Python that lives inside a checkout brings the folders above it, empty but for the prefix
+allowed = set(["balancelab"])
+if sys.prefix.startswith(str(root) + "/"):
+    allowed.add(pathlib.Path(sys.prefix).relative_to(root).parts[0])
+if root.is_dir():
+    seen += [str(p) for p in root.iterdir() if p.name not in allowed]
 # the grader's real home: at most the folders that lead to this Python (when it lives there)
 real = pathlib.Path({real_home!r})
 if real.is_dir():
