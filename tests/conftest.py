@@ -144,3 +144,10 @@ def build_mini_book(tmp_path: Path, body: str, local_extensions: dict | None = N
             f"{str(tmp_path / '_toc.yml')!r}, 'latex_individualpages': False, 'nitpicky': True}}, "
             "warningiserror=True, keep_going=True, quiet=True))")
     return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
+
+
+def pytest_collection_modifyitems(session, config, items):
+    """tests/test_a11y.py checks the site that tests/test_book.py builds: run it last."""
+    late = [item for item in items if item.path.name == "test_a11y.py"]
+    if late:
+        items[:] = [item for item in items if item.path.name != "test_a11y.py"] + late
