@@ -122,7 +122,7 @@ def test_axe_finds_no_wcag_21_aa_violation_on_any_page(site, server, browser, ax
     ctx.close()
     REPORTS.mkdir(parents=True, exist_ok=True)
     (REPORTS / f"axe_{width}.json").write_text(json.dumps(
-        {"axe": axe_js.parent.name, "tags": TAGS, "pages": len(pages),
+        {"axe": "axe-core " + (axe_js.parent / "VERSION.txt").read_text().strip(), "tags": TAGS, "pages": len(pages),
          "rules": {k: {"elements": n, "pages": sorted(per_rule_pages[k])} for k, n in per_rule.items()},
          "violations": found},
         indent=1))
@@ -135,7 +135,7 @@ STATE = """(el) => {
   const p = el.closest("div.animation");
   const s = p.querySelector("input.anim-slider");
   return {value: +s.value, text: s.getAttribute("aria-valuetext") || "", name: s.getAttribute("aria-label") || "",
-          said: p.querySelector("[aria-live]").textContent, shown: p.querySelector(".bl-anim-status").textContent,
+          said: p.querySelector("[aria-live]").textContent, shown: p.querySelector(".bl-anim-status > span:first-child").textContent,
           max: +s.max};
 }"""
 FOCUSED = """() => { const e = document.activeElement;

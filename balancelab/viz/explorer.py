@@ -471,6 +471,7 @@ class Explorer:
         self._widget = w.VBox(list(self._sliders.values()) + list(self._q_sliders.values())
                               + [self._image, self._report_html, self._message_html])
         self._label_widgets()
+        self._widget.children += (widget_access.script_output(self._a11y_script()),)
         self._show_text()
 
     # ----------------------------------------------------------- accessibility
@@ -537,8 +538,6 @@ class Explorer:
         from IPython.display import display
 
         display(self.widget)
-        # no text/plain: a terminal shows nothing; a notebook front end runs the script
-        display({"application/javascript": self._a11y_script()}, raw=True)
 
     def __repr__(self) -> str:
         return (f"<Explorer of {self.design.name!r}: parameters {list(self.params)}, "

@@ -2,8 +2,8 @@
 
 ipywidgets 8 draws a slider as a ``role="slider"`` handle (noUiSlider) without an accessible
 name, and replaces the report's HTML on every change without telling a screen reader. The
-notebook front end (JupyterLab, Notebook 7) runs a small script displayed with the explorer
-(:func:`script`) that names each handle after its slider, gives it a description
+notebook front end (JupyterLab, Notebook 7) runs a small script that the explorer's box carries in
+an ``ipywidgets.Output`` (:func:`script`, :func:`script_output`) that names each handle after its slider, gives it a description
 (``aria-describedby``: what it moves, its range and step, from :func:`slider_descriptions`),
 makes the report a polite live region (``role="status"``) and gives the picture a text
 alternative. Each slider also carries its description as a tooltip. Layer: viz.
@@ -15,7 +15,7 @@ import uuid
 
 import numpy as np
 
-__all__ = ["label_widgets", "script", "slider_descriptions"]
+__all__ = ["label_widgets", "script", "script_output", "slider_descriptions"]
 
 _A11Y_JS = """(function () {
   var spec = SPEC, tries = 0;
@@ -117,3 +117,22 @@ def script(uid: str, name: str, sliders: list, descriptions: dict) -> str:
             "sliders": [[f"bl-slider-{uid}-{i}", s.description, descriptions.get(s.description, "")]
                         for i, s in enumerate(sliders)]}
     return _A11Y_JS.replace("SPEC", json.dumps(spec, ensure_ascii=False).replace("</", "<\\/"))
+
+
+def script_output(js: str):
+    """An ``ipywidgets.Output`` that holds ``js`` as its one (invisible) output.
+
+    A notebook front end renders it with the widget, wherever the widget is shown, and runs the
+    script; a front end that runs no JavaScript shows nothing.
+
+    Examples
+    --------
+    >>> script_output("1 + 1;").outputs[0]["data"]["application/javascript"]
+    '1 + 1;'
+    """
+    import ipywidgets as w
+
+    out = w.Output(layout=w.Layout(height="0px", overflow="hidden", margin="0", padding="0"))
+    out.outputs = ({"output_type": "display_data", "metadata": {},
+                    "data": {"application/javascript": js, "text/plain": ""}},)
+    return out
