@@ -4,7 +4,8 @@
   ``scripts/build_book.py``, see :func:`build_book.fetch_axe`) runs in Chromium on every page of
   ``_build/html`` at 390 px and 1280 px with the tags ``wcag2a``, ``wcag2aa``, ``wcag21a`` and
   ``wcag21aa``; any violation fails the test, which prints the rule, the element and the page.
-  The per-rule counts are written to ``_build/a11y/axe_<width>.json``.
+  The per-rule counts are written to ``_build/a11y/axe_<width>.json``. On the same pages every
+  formula must carry MathJax's assistive MathML (what a screen reader reads).
 * An animation player is walked through with the keyboard alone: tab to its slider, scrub with
   the arrow keys, Home and End, step with the "Next frame" button, play and pause; the slider's
   spoken value and the live region say which frame and configuration are shown.
@@ -118,6 +119,10 @@ def test_axe_finds_no_wcag_21_aa_violation_on_any_page(site, server, browser, ax
             for n in v["nodes"]:
                 found.append(f"{v['id']} ({v['impact']}) on {rel} at {width} px: {n['target']}\n"
                              f"    {n['html']}\n    {n['why']}")
+        # MathJax's assistive MathML: a screen reader reads each formula from it
+        bare = page.evaluate("() => document.querySelectorAll('mjx-container:not(:has(> mjx-assistive-mml))').length")
+        if bare:
+            found.append(f"assistive-mathml on {rel} at {width} px: {bare} formulas without MathML for screen readers")
         page.close()
     ctx.close()
     REPORTS.mkdir(parents=True, exist_ok=True)
