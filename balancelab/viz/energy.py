@@ -64,9 +64,9 @@ def q_symbol(design: Design, i: int = 0) -> str:
     return _GREEK.get(base, base) + sub
 
 
-def _j(x: float) -> str:
-    """An energy in joules for words: 3 significant digits, round-off shown as 0."""
-    return f"{x:.3g}" if abs(x) >= 1e-9 else "0"
+def _j(x: float, scale: float) -> str:
+    """An energy in joules for words: 3 significant digits, round-off (< 1e-9 of ``scale``) shown as 0."""
+    return f"{x:.3g}" if abs(x) > 1e-9 * scale else "0"
 
 
 def _span(design: Design, grid: np.ndarray, i: int) -> str:
@@ -103,17 +103,18 @@ def describe_energy(design: Design, report, grid, total, load, spring) -> str:
     if report is None or not ok.any():
         return "nothing stores energy as the design moves"
     t, l_, s = total[ok], load[ok], spring[ok]
+    sc = report.scale
     where = _span(design, grid, 0) + (f" and {_span(design, grid, 1)}" if design.dof == 2 else "")
     parts = []
     for name, v in (("springs'", s), ("loads'", l_)):
         if np.ptp(v) > 1e-9 * max(report.scale, 1e-300):
-            parts.append(f"the {name} energy ({_j(v.min())} to {_j(v.max())} J)")
+            parts.append(f"the {name} energy ({_j(v.min(), sc)} to {_j(v.max(), sc)} J)")
     if report.balanced:
         trade = (" while " + " and ".join(parts) + (" trade" if len(parts) == 2 else " varies")) if parts else ""
-        return f"the total energy is flat at {_j(float(np.mean(t)))} J over {where}{trade}"
+        return f"the total energy is flat at {_j(float(np.mean(t)), sc)} J over {where}{trade}"
     wq = np.degrees(np.atleast_1d(report.worst_q))
     at = ", ".join(f"{q_symbol(design, i)} = {v:.0f}°" for i, v in enumerate(wq))
-    return (f"the total energy is not flat: it varies from {_j(t.min())} to {_j(t.max())} J over {where} "
+    return (f"the total energy is not flat: it varies from {_j(t.min(), sc)} to {_j(t.max(), sc)} J over {where} "
             f"({report.variation:.2g} of the energy scale); the largest residual |dV/dq| is "
             f"{report.residual * report.scale:.3g} J/rad at {at}")
 
