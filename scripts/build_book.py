@@ -4,14 +4,16 @@ Usage::
 
     python scripts/build_book.py            # cached execution, warnings are errors
     python scripts/build_book.py --force    # re-execute every chapter (what the tests do)
-    python scripts/build_book.py --assets   # only fetch the offline assets
+    python scripts/build_book.py --assets   # only fetch the offline assets (and axe-core)
 
 The site must load nothing from a CDN, so MathJax 3, require.js and
 ``@jupyter-widgets/html-manager`` are taken from the npm registry (``npm pack`` with
 exact versions; npm checks each tarball's integrity) and unpacked into the git-ignored
 ``book/_vendor/vendor/``, which Sphinx publishes at ``/vendor/`` through
 ``html_extra_path``; ``book/_ext/offline_assets.py`` then drops from the site what no page
-requests (the widget manager and require.js when no page has widgets).
+requests (the widget manager and require.js when no page has widgets). axe-core, which the
+accessibility test injects into every page, goes to the git-ignored ``tests/_vendor/`` instead
+(:func:`fetch_axe`): it is a test tool, not part of the site.
 
 The chapters' kernels start with the course's figure style installed
 (:func:`balancelab.viz.style.install`: every figure at the house resolution, one image per
@@ -133,6 +135,36 @@ def fetch_assets(force: bool = False) -> Path:
     return VENDOR
 
 
+#: axe-core, the accessibility checker the browser tests inject into every page (tests/test_a11y.py);
+#: vendored beside the tests, never published with the site.
+AXE_VERSION = "4.14.1"
+AXE_DIR = ROOT / "tests" / "_vendor" / "axe-core"
+
+
+def fetch_axe(force: bool = False) -> Path:
+    """Put axe-core's ``axe.min.js`` (npm, exact version) into the git-ignored ``tests/_vendor/``.
+
+    Parameters
+    ----------
+    force : bool
+        Fetch again even when the pinned version is already there.
+
+    Returns
+    -------
+    pathlib.Path
+        The path of ``axe.min.js``.
+    """
+    script, stamp = AXE_DIR / "axe.min.js", AXE_DIR / "VERSION.txt"
+    if not force and script.is_file() and stamp.is_file() and stamp.read_text().strip() == AXE_VERSION:
+        return script
+    AXE_DIR.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        tgz = _npm_pack(f"axe-core@{AXE_VERSION}", Path(tmp))
+        _extract(tgz, "package/", AXE_DIR, ("axe.min.js", "LICENSE"))
+    stamp.write_text(AXE_VERSION + "\n")
+    return script
+
+
 def build(force: bool = False, all_pages: bool = False, quiet: bool = False, toc=None) -> float:
     """Build the site into ``_build/html`` with warnings as errors; return the seconds it took.
 
@@ -191,8 +223,10 @@ def main(argv=None) -> int:
     a = p.parse_args(argv)
     if a.assets:
         print(fetch_assets(force=True))
+        print(fetch_axe(force=True))
         return 0
     t = build(force=a.force, all_pages=a.all, quiet=a.quiet, toc=a.toc)
+    fetch_axe()  # for the accessibility test of the site just built
     print(f"\nbook built in {t:.1f} s: open {OUT / 'index.html'}")
     return 0
 

@@ -158,3 +158,10 @@ def personal_r_c(student_id: str) -> str:
             f"_n = _tn('1.1', {student_id!r})\n"
             "r_c = bl.lecture.single_link_counterweight(_n['mass'], _n['length'], _n['counter_mass'], "
             "link_mass=_n['link_mass']).parameters['r_c']")
+
+
+def pytest_collection_modifyitems(session, config, items):
+    """tests/test_a11y.py checks the site that tests/test_book.py builds: run it last."""
+    late = [item for item in items if item.path.name == "test_a11y.py"]
+    if late:
+        items[:] = [item for item in items if item.path.name != "test_a11y.py"] + late

@@ -167,3 +167,76 @@ def test_animation_frames_show_the_designs_own_numbers():
         y = sweep.energy.lines["total"].get_data()[1]
         np.testing.assert_array_equal(y, design.potential_energy(sweep.energy.grid).total)
         assert sweep.drawing.design is design
+
+
+# --------------------------------------------------------------------------- accessible player
+def _one_dof(name: str) -> bool:
+    return build(name).dof == 1
+
+
+@pytest.mark.parametrize("name", [n for n in ALL if _one_dof(n)][:4])
+def test_an_animation_says_what_it_shows_from_the_designs_own_energies(name):
+    d = build(name)
+    anim = animate(d, frames=8)
+    grid = anim.energy.grid
+    e = d.potential_energy(grid[d.reachable(grid)])
+    report = d.balance_report()
+    if report.balanced:
+        mean = float(np.mean(e.total))
+        said = f"{mean:.3g}" if abs(mean) > 1e-9 * report.scale else "0"   # round-off is said as 0
+        assert f"the total energy is flat at {said} J" in anim.description
+    else:
+        assert "the total energy is not flat" in anim.description
+        assert f"from {e.total.min():.3g} to {e.total.max():.3g} J" in anim.description
+    # one label per frame, naming the configuration it shows in degrees
+    assert anim.frame_labels == [f"θ = {math.degrees(q[0]):.0f}°" for q in anim.path]
+
+
+def test_an_unbalanced_design_is_never_described_as_flat():
+    import dataclasses
+
+    d = bl.lecture.single_link_spring(mass=2.0, length=0.5, b=0.3, c=0.2)
+    off = d.replace(springs=[dataclasses.replace(d.springs[0], k=1.2 * d.springs[0].k)])
+    assert not off.balance_report().balanced
+    anim = animate(off, frames=4)
+    assert "not flat" in anim.description and "is flat" not in anim.description
+    assert "residual |dV/dq|" in anim.description
+
+
+def test_player_is_named_spoken_and_fits_a_phone():
+    d = bl.lecture.single_link_spring(mass=2.0, length=0.5, b=0.3, c=0.2)
+    anim = animate(d, frames=6)
+    labels = list(anim.frame_labels)
+    p = bl.viz.player(anim)
+    html = p.html
+    assert p.frames == 6
+    assert 'aria-label="Frame"' in html
+    assert f'aria-valuetext="frame 1 of 6: {labels[0]}"' in html
+    assert 'aria-live="polite"' in html and 'role="status"' in html
+    # the frame labels the script speaks are the animation's, in order
+    assert re.search(r"labels = (\[.*?\])", html).group(1).count("θ =") == 6
+    # alt text: the computed finding, and every button keeps its name
+    assert 'alt="' + d.name in html and "total energy is flat" in html
+    for name in ("Play", "Pause", "Next frame", "Previous frame", "First frame", "Last frame"):
+        assert f'aria-label="{name}"' in html
+    # the slider is never wider than the column, the buttons never wrap
+    assert "max-width: 374px" in html and "flex-wrap: nowrap" in html
+
+
+def test_player_needs_words_for_an_animation_that_has_none():
+    from matplotlib.animation import FuncAnimation
+    from matplotlib.figure import Figure
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = Figure()
+    FigureCanvasAgg(fig)
+    ax = fig.subplots()
+    line, = ax.plot([0, 1], [0, 1])
+    anim = FuncAnimation(fig, lambda i: [line], frames=3)
+    with pytest.raises(ValueError, match="alt"):
+        bl.viz.player(anim)
+    with pytest.raises(ValueError, match="alt"):
+        bl.viz.player(anim, "   ")
+    p = bl.viz.player(anim, 'a "quoted" <line>')
+    assert 'alt="a &quot;quoted&quot; &lt;line&gt;"' in p.html
+    assert 'aria-valuetext="frame 1 of 3"' in p.html

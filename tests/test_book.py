@@ -32,7 +32,7 @@ pytestmark = pytest.mark.slow
 
 CHAPTERS = ["intro", "notation", "ch1_counterweights", "ch2_zfl_springs", "ch3_building_zfl",
             "ch4_serial", "ch5_fourbar", "ch6_scissors_peaucellier", "ch7_your_own_linkage",
-            "ch8_ideal_to_real", "ch9_noncircular", "labs", "notes_on_sources", "references"]
+            "ch8_ideal_to_real", "ch9_noncircular", "labs", "notes_on_sources", "references", "accessibility"]
 NOTEBOOKS = [c for c in CHAPTERS if c.startswith("ch")] + ["labs"]
 REMOTE = re.compile(r"""<(?:script|img|iframe|link)\b[^>]*?\b(?:src|href)\s*=\s*["'](?:https?:)?//[^"']*""",
                     re.IGNORECASE)

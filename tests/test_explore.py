@@ -196,3 +196,23 @@ def test_bad_parameter_specs():
         explore(lever, {"a_x": (0.1, 0.5, 0.1, 0.9)})
     with pytest.raises(TypeError, match="callable"):
         explore(42)
+
+
+def test_sliders_are_named_described_and_the_report_is_live():
+    """The widget carries the script that names each slider's handle and makes the report live."""
+    import json
+    import re
+
+    ex = explore(lambda a_x=0.2: bl.singh.lacoste_lever(10.0, 0.5, a_x, 0.3), {"a_x": (0.05, 0.4, 0.01)})
+    box = ex.widget
+    sliders = [c for c in box.children if c.__class__.__name__ == "FloatSlider"]
+    script = [c for c in box.children if c.__class__.__name__ == "Output"]
+    assert len(script) == 1
+    js = script[0].outputs[0]["data"]["application/javascript"]
+    spec = json.loads(re.search(r"var spec = (\{.*?\}), tries", js, re.S).group(1))
+    # every slider, by its visible label, with a description that gives its range
+    assert [s[1] for s in spec["sliders"]] == [s.description for s in sliders]
+    for (cls, label, text), s in zip(spec["sliders"], sliders):
+        assert cls in s._dom_classes and s.tooltip == text
+        assert f"from {s.min:.4g}" in text.replace(".0 ", " ") or f"from {s.min:.1f}" in text, text
+    assert "aria-live" in js and "role" in js and spec["report"] in ex._report_html._dom_classes

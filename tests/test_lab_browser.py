@@ -177,3 +177,73 @@ def test_lab_explorer_reacts_to_a_slider(jupyterlab):
     assert "lamp arm" in text_before and "lamp arm" in text_after
     assert img_after != img_before
     assert (SHOTS / "before.png").stat().st_size > 10_000 and (SHOTS / "after.png").stat().st_size > 10_000
+
+
+#: the focused slider handle: its accessible name, description and spoken value (noUiSlider keeps
+#: aria-valuenow at the first value and updates aria-valuetext, which screen readers read)
+FOCUSED_HANDLE = """() => {
+    const e = document.activeElement;
+    if (!e || !e.classList.contains("noUi-handle")) return null;
+    const d = document.getElementById(e.getAttribute("aria-describedby") || "");
+    return {name: e.getAttribute("aria-label") || "", role: e.getAttribute("role"),
+            description: d ? d.textContent : "", value: e.getAttribute("aria-valuetext")};
+}"""
+#: the first explorer's report, only if it is a polite live region (what a screen reader hears)
+LIVE_REPORT = """() => {
+    const el = document.querySelector(".bl-explorer [role=status][aria-live=polite]");
+    return el ? el.textContent : null;
+}"""
+
+
+def test_lab_explorer_by_keyboard_alone(jupyterlab):
+    """Tab from the explorer's cell to the r_c slider, move it with the arrow keys, hear the report."""
+    from playwright.sync_api import sync_playwright
+
+    url, token = jupyterlab
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    with sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+        try:
+            page = browser.new_page(viewport={"width": 1400, "height": 1000})
+            page.goto(f"{url}/lab/tree/lab1.ipynb?token={token}")
+            page.wait_for_selector(".jp-Notebook", timeout=60_000)
+            _run_all_once(page)
+            try:
+                page.wait_for_function(ALL_CELLS_RUN, timeout=180_000)
+                page.wait_for_function(f"() => ({LIVE_REPORT})() && ({LIVE_REPORT})().includes('lamp arm')",
+                                       timeout=60_000)
+                page.wait_for_function("() => document.querySelector('.bl-explorer .noUi-handle[aria-label]')",
+                                       timeout=30_000)
+            except Exception as err:  # noqa: BLE001 - any wait that times out is the failure
+                _fail_with_screenshot(page, f"the explorer was not labelled for assistive technology: {err}")
+            before = page.evaluate(LIVE_REPORT)
+            # the keyboard starts on the explorer's cell (command mode, as after Shift+Enter)
+            page.evaluate("""() => {
+                const nb = window.jupyterapp.shell.currentWidget.content;
+                const i = nb.widgets.findIndex(c => c.node.querySelector('.bl-explorer'));
+                nb.activeCellIndex = i; nb.mode = 'command'; nb.activeCell.node.focus();
+            }""")
+            for presses in range(1, 61):
+                page.keyboard.press("Tab")
+                handle = page.evaluate(FOCUSED_HANDLE)
+                if handle and handle["name"] == "r_c":
+                    break
+            else:
+                _fail_with_screenshot(page, "60 presses of Tab from the explorer's cell never reached the r_c slider")
+            assert handle["role"] == "slider"
+            assert "r_c" in handle["description"] and " to " in handle["description"], handle
+            for _ in range(4):
+                page.keyboard.press("ArrowRight")
+            after = page.wait_for_function(
+                f"old => {{ const t = ({LIVE_REPORT})(); return t && t !== old && t.includes('lamp arm') ? t : null; }}",
+                arg=before, timeout=30_000).json_value()
+            # the slider says its new value too, and keeps the focus
+            moved = page.wait_for_function(
+                f"old => {{ const h = ({FOCUSED_HANDLE})(); return h && h.value !== old ? h : null; }}",
+                arg=handle["value"], timeout=30_000).json_value()
+            page.screenshot(path=str(SHOTS / "keyboard.png"))
+        finally:
+            browser.close()
+    assert moved is not None and moved["name"] == "r_c", "the focus left the slider"
+    assert float(moved["value"]) > float(handle["value"])
+    assert after != before and "lamp arm" in after

@@ -7,8 +7,11 @@ coil, a gas spring or a string over a pulley is drawn), ``drawing`` (:func:`draw
 :class:`Drawing`), ``diagram`` (labelled diagrams: named points, dimension lines, angle
 arcs), ``energy``
 (:func:`energy_plot` and :class:`EnergyView`), ``spaces`` (:func:`lever_valley`,
-:func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations)
-and ``explorer`` (live ipywidgets explorers, imported on first use). No physics is
+:func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations),
+``player`` (the page's accessible animation player), ``explorer`` (live ipywidgets
+explorers, imported on first use) and ``widget_access`` (the explorers' slider names,
+descriptions and live report for screen readers). Every figure and animation says what it
+shows in words computed from the design (its alt text). No physics is
 computed here: geometry and energies come from the :class:`balancelab.Design` being
 drawn (and a spring's realization from its ``realization``), so a picture cannot
 disagree with the numbers.

@@ -13,8 +13,9 @@ text stays readable when a phone shows it at the page's width.
 * :func:`animate_parameter` rebuilds the design for each value of one parameter (the
   free choice ``a_x`` of a lever, a pulley radius, the position of a pivot on its
   locus ...): scrubbing the player is the static-page counterpart of a lab's slider.
-* :func:`player` turns any matplotlib animation into the page's player, with a text
-  alternative for readers who cannot see it.
+* :func:`~balancelab.viz.player.player` (in :mod:`balancelab.viz.player`) turns any matplotlib
+  animation into the page's player; both functions here give it a text alternative computed
+  from the designs' numbers (``anim.description``) and a label per frame (``anim.frame_labels``).
 """
 from __future__ import annotations
 
@@ -25,12 +26,13 @@ import numpy as np
 
 from ..core.design import Design
 from .drawing import Drawing, extent
-from .energy import EnergyView, energy_limits
+from .energy import EnergyView, energy_limits, q_symbol, report_summary
 from . import style
 from .style import FONT, fit_title
 from .frame import Blitter, check_design, default_q
+from .player import Player, offline_page, player
 
-__all__ = ["Player", "animate", "animate_parameter", "configuration_path", "player"]
+__all__ = ["Player", "animate", "animate_parameter", "configuration_label", "configuration_path", "player"]
 
 #: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB and a frame
 #: shown 350 px wide (a phone) keeps its smallest text >= 9 px (see :mod:`balancelab.viz.style`).
@@ -139,51 +141,13 @@ def _animation_class():
                         self.save(str(path), writer=writer)
                     finally:
                         self._compact_saving = False
-                    cache[key] = _offline(path.read_text())
+                    cache[key] = offline_page(path.read_text())
             return cache[key]
 
         def _repr_html_(self):
             return self.to_jshtml()
 
     return BalanceAnimation
-
-
-def _svg(path: str, flip: bool = False) -> str:
-    """An inline 16x16 icon drawn in the text colour (no icon font, no network)."""
-    turn = ' transform="matrix(-1 0 0 1 16 0)"' if flip else ""
-    return (f'<svg aria-hidden="true" class="bl-icon" viewBox="0 0 16 16" width="1em" height="1em">'
-            f'<path fill="currentColor"{turn} d="{path}"/></svg>')
-
-
-_PLAY = "M4 2.5v11l9-5.5z"
-_STEP = "M3 2.5v11l8-5.5zM12 2.5h2v11h-2z"
-_FAST = "M1 2.5v11l7-5.5zM8 2.5v11l7-5.5z"
-#: matplotlib's Font Awesome 4 player icons as inline SVG paths.
-_ICONS = {
-    "fa fa-play fa-flip-horizontal": _svg(_PLAY, flip=True),
-    "fa fa-minus": _svg("M2 7h12v2H2z"),
-    "fa fa-fast-backward": _svg(_FAST + "M13 2.5h2v11h-2z", flip=True),
-    "fa fa-step-backward": _svg(_STEP, flip=True),
-    "fa fa-pause": _svg("M3 2.5h3.5v11H3zM9.5 2.5H13v11H9.5z"),
-    "fa fa-play": _svg(_PLAY),
-    "fa fa-step-forward": _svg(_STEP),
-    "fa fa-fast-forward": _svg(_FAST + "M13 2.5h2v11h-2z"),
-    "fa fa-plus": _svg("M7 2h2v5h5v2H9v5H7V9H2V7h5z"),
-}
-
-
-def _offline(page: str) -> str:
-    """Make matplotlib's player self-contained: no icon font fetched from a CDN.
-
-    The buttons' Font Awesome icons become inline SVG drawings, so the player looks and
-    works the same on a page opened with no network and with any system fonts.
-    """
-    import re
-
-    page = re.sub(r'<link rel="stylesheet"\s*href="https?://[^"]*font-awesome[^"]*">\s*', "", page)
-    for cls, icon in _ICONS.items():
-        page = page.replace(f'<i class="{cls}"></i>', icon)
-    return page
 
 
 def _freeze_layout(fig) -> None:
@@ -341,7 +305,43 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
     anim.drawing = drawing
     anim.energy = energy
     anim.fps = fps
+    anim.frame_labels = [configuration_label(design, q) for q in path]
+    anim.description = _motion_description(design, path, energy)
     return anim
+
+
+def configuration_label(design: Design, q) -> str:
+    """A configuration in words for a player's frame: ``"θ = 40°"``, ``"θ1 = 90°, θ2 = -10°"``.
+
+    Parameters
+    ----------
+    design : Design
+    q : array_like, shape (dof,)
+        The configuration (rad).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> configuration_label(bl.catalog()["lacoste_lever"](), [0.7])
+    'θ = 40°'
+    """
+    q = np.asarray(q, dtype=float).reshape(-1)
+    return ", ".join(f"{q_symbol(design, i)} = {np.degrees(v):.0f}°" for i, v in enumerate(q))
+
+
+def _motion_description(design: Design, path: np.ndarray, energy) -> str:
+    """What :func:`animate` shows: the design, the range it moves through, and its energy finding."""
+    lo, hi = np.degrees(path.min(axis=0)), np.degrees(path.max(axis=0))
+    moves = ", ".join(f"{q_symbol(design, i)} from {a:.0f}° to {b:.0f}°" for i, (a, b) in enumerate(zip(lo, hi)))
+    text = f"{design.name} moving through {moves} in {len(path)} frames"
+    if energy is not None:
+        return f"{text}; {energy.description}"
+    rep = design.balance_report()
+    return f"{text}; it is {'balanced' if rep.balanced else 'not balanced'}: {report_summary(rep)}"
 
 
 def _verdict(view: EnergyView) -> str:
@@ -448,6 +448,7 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     anim.values = values
     anim.designs = designs
     anim.messages = messages
+    anim.frame_labels, anim.description = _sweep_words(designs, heads, name, unit_s)
     anim.drawing = drawing
     anim.energy = energy
     anim.fps = fps
@@ -473,6 +474,21 @@ def _sweep(factory: Callable, name: str, values: list, fixed: dict, q, unit_s: s
         qs.append(qq)
         messages.append("")
     return designs, qs, messages
+
+
+def _sweep_words(designs: list, heads: list, name: str, unit_s: str) -> tuple[list, str]:
+    """Each frame's label and the sweep's description: for which values the design is balanced."""
+    verdicts, labels = [], []
+    for d, h in zip(designs, heads):
+        rep = None if d is None else d.balance_report(n=200)
+        verdicts.append("no valid design" if d is None else ("balanced" if rep.balanced else "not balanced"))
+        labels.append(f"{h}, {verdicts[-1]}")
+    first = next(d for d in designs if d is not None)
+    vals = [h.split(" = ", 1)[1].removesuffix(unit_s) for h in heads]
+    groups = {v: [x for x, w in zip(vals, verdicts) if w == v] for v in dict.fromkeys(verdicts)}
+    found = "; ".join(f"{v} for {name} = {', '.join(xs)}{unit_s}" for v, xs in groups.items())
+    return labels, (f"{first.name} redrawn for {len(heads)} values of {name} from {vals[0]} to {vals[-1]}"
+                    f"{unit_s}: {found}")
 
 
 def _union_box(designs: list) -> np.ndarray:
@@ -534,66 +550,3 @@ def _wrap(text: str, width: int = 36) -> str:
     import textwrap
 
     return "\n".join(textwrap.wrap(text, width)[:8])
-
-
-class Player:
-    """A self-contained HTML animation player; Jupyter shows it through ``_repr_html_``.
-
-    Parameters
-    ----------
-    html : str
-        The player's HTML (from :func:`player`).
-    frames : int
-        Number of frames it holds.
-    """
-
-    def __init__(self, html: str, frames: int):
-        self.html, self.frames = html, int(frames)
-
-    def _repr_html_(self) -> str:
-        return self.html
-
-    def __repr__(self) -> str:
-        return f"<animation player, {self.frames} frames>"
-
-
-def player(anim, alt: str, default_mode: str = "loop") -> Player:
-    """The page's player of an animation, its frames described by ``alt``; the figure is closed.
-
-    Parameters
-    ----------
-    anim : matplotlib.animation.Animation
-        From :func:`animate`, :func:`animate_parameter` or any ``FuncAnimation``.
-    alt : str
-        What the animation shows, in words (the text alternative of its frames).
-    default_mode : {"loop", "once", "reflect"}
-        What the player does at the last frame.
-
-    Returns
-    -------
-    Player
-        Displayed as the player in a notebook or a built page.
-
-    Examples
-    --------
-    >>> import balancelab as bl
-    >>> p = player(animate(bl.catalog()["lacoste_lever"](), frames=4), "a lever turning")
-    >>> p, 'alt="a lever turning"' in p.html
-    (<animation player, 4 frames>, True)
-    """
-    import re
-    from html import escape
-
-    import matplotlib.pyplot as plt
-    from matplotlib.animation import Animation
-
-    if not isinstance(anim, Animation):
-        raise TypeError(f"anim must be a matplotlib Animation (from animate), got {type(anim).__name__}")
-    if not isinstance(alt, str) or not alt.strip():
-        raise ValueError("alt must describe the animation in words (a non-empty string)")
-    if default_mode not in ("loop", "once", "reflect"):
-        raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
-    html = anim.to_jshtml(default_mode=default_mode)
-    frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
-    plt.close(anim._fig)  # matplotlib keeps the figure only under this name
-    return Player(html.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" id=', 1), frames)

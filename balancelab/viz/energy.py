@@ -19,7 +19,8 @@ from ..core.validation import finite_real
 from .style import FONT
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
 
-__all__ = ["EnergyView", "energy_limits", "energy_plot", "report_summary", "sweep_path"]
+__all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
+           "sweep_path"]
 
 
 def sweep_path(design: Design, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -67,6 +68,78 @@ def report_summary(report) -> str:
     q = ", ".join(f"{np.degrees(v):.0f}°" for v in np.atleast_1d(report.worst_q))
     return (f"NOT balanced: energy varies by {report.variation:.2g} of its scale; "
             f"largest |dV/dq| = {report.residual * report.scale:.3g} J/rad at ({q})")
+
+
+_GREEK = {"theta": "θ", "phi": "φ", "psi": "ψ", "alpha": "α", "beta": "β", "gamma": "γ"}
+
+
+def q_symbol(design: Design, i: int = 0) -> str:
+    """Coordinate ``i`` of a design as a screen reader can say it: ``theta_1`` -> ``θ1``.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> q_symbol(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3))
+    'θ'
+    """
+    name = design.q_names[i]
+    base, _, sub = name.partition("_")
+    return _GREEK.get(base, base) + sub
+
+
+def _j(x: float, scale: float) -> str:
+    """An energy in joules for words: 3 significant digits, round-off (< 1e-9 of ``scale``) shown as 0."""
+    return f"{x:.3g}" if abs(x) > 1e-9 * scale else "0"
+
+
+def _span(design: Design, grid: np.ndarray, i: int) -> str:
+    lo, hi = np.degrees(grid[0, i]), np.degrees(grid[-1, i])
+    return f"{q_symbol(design, i)} from {lo:.0f}° to {hi:.0f}°"
+
+
+def describe_energy(design: Design, report, grid, total, load, spring) -> str:
+    """What an energy plot shows, in words: is the total flat, at what energy, and what trades.
+
+    Parameters
+    ----------
+    design : Design
+    report : BalanceReport or None
+        Its balance report (``None``: nothing stores energy).
+    grid : numpy.ndarray, shape (m, dof)
+        Configurations (rad).
+    total, load, spring : numpy.ndarray, shape (m,)
+        The design's energies there (J, NaN where unreachable).
+
+    Returns
+    -------
+    str
+        One sentence, numbers in joules and degrees.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> view = EnergyView(bl.lecture.single_link_spring(mass=2.0, length=0.5, b=0.3, c=0.2))
+    >>> print(view.description)  # doctest: +ELLIPSIS
+    the total energy is flat at ... J over θ from ...° to ...° while the springs' energy (...) and the loads' energy (...) trade
+    """
+    ok = np.isfinite(total)
+    if report is None or not ok.any():
+        return "nothing stores energy as the design moves"
+    t, l_, s = total[ok], load[ok], spring[ok]
+    sc = report.scale
+    where = _span(design, grid, 0) + (f" and {_span(design, grid, 1)}" if design.dof == 2 else "")
+    parts = []
+    for name, v in (("springs'", s), ("loads'", l_)):
+        if np.ptp(v) > 1e-9 * max(report.scale, 1e-300):
+            parts.append(f"the {name} energy ({_j(v.min(), sc)} to {_j(v.max(), sc)} J)")
+    if report.balanced:
+        trade = (" while " + " and ".join(parts) + (" trade" if len(parts) == 2 else " varies")) if parts else ""
+        return f"the total energy is flat at {_j(float(np.mean(t)), sc)} J over {where}{trade}"
+    wq = np.degrees(np.atleast_1d(report.worst_q))
+    at = ", ".join(f"{q_symbol(design, i)} = {v:.0f}°" for i, v in enumerate(wq))
+    return (f"the total energy is not flat: it varies from {_j(t.min(), sc)} to {_j(t.max(), sc)} J over {where} "
+            f"({report.variation:.2g} of the energy scale); the largest residual |dV/dq| is "
+            f"{report.residual * report.scale:.3g} J/rad at {at}")
 
 
 def _safe_report(design: Design, n: int = 1000):
@@ -304,6 +377,18 @@ class EnergyView:
         if self.show_title:
             self.ax.set_title(f"{d.name}: " + ("balanced" if rep is not None and rep.balanced else
                                                "not balanced"), fontsize=FONT["title"])
+
+    @property
+    def description(self) -> str:
+        """What the plot shows, in words, from the design's numbers (the figure's alt text).
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> EnergyView(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)).description[:27]
+        'the total energy is flat at'
+        """
+        return describe_energy(self.design, self.report, self.grid, self.total, self.load, self.spring)
 
     @property
     def artists(self) -> list:

@@ -31,6 +31,7 @@ from .drawing import Drawing, extent
 from .energy import EnergyView, report_summary
 from .style import FONT
 from .frame import Blitter, check_design, default_q
+from . import widget_access
 
 __all__ = ["Explorer", "explore", "scaled_design_factory"]
 
@@ -469,7 +470,27 @@ class Explorer:
         self._message_html = w.HTML()
         self._widget = w.VBox(list(self._sliders.values()) + list(self._q_sliders.values())
                               + [self._image, self._report_html, self._message_html])
+        self._label_widgets()
+        self._widget.children += (widget_access.script_output(self._a11y_script()),)
         self._show_text()
+
+    # ----------------------------------------------------------- accessibility
+    @property
+    def slider_descriptions(self) -> dict:
+        """What each slider moves, in words (see :func:`~balancelab.viz.widget_access.slider_descriptions`)."""
+        return widget_access.slider_descriptions(self)
+
+    def _label_widgets(self) -> None:
+        self._uid = widget_access.label_widgets(self._widget, self._report_html,
+                                                list(self._sliders.values()) + list(self._q_sliders.values()),
+                                                self.slider_descriptions)
+
+    def _a11y_script(self) -> str:
+        if self._widget is None:
+            self._make_widgets()
+        return widget_access.script(self._uid, self.design.name,
+                                    list(self._sliders.values()) + list(self._q_sliders.values()),
+                                    self.slider_descriptions)
 
     def _on_param(self, name):
         def callback(change):

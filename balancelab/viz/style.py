@@ -272,6 +272,11 @@ def _crop(rgba: np.ndarray, background) -> np.ndarray:
 
 
 def _alt(fig, axes) -> str:
+    # a plot that can say what it shows (an energy plot: is the total flat, at what energy) says it
+    found = [d for d in (getattr(getattr(ax, "energy", None), "description", None) for ax in axes)
+             if isinstance(d, str)]
+    if found:
+        return "Energy plot: " + "; ".join(found)
     parts = []
     for ax in axes:
         bits = [t for t in (ax.get_title(), ax.get_title("left"), ax.get_title("right")) if t]

@@ -4,7 +4,8 @@ In the book's kernels ``balancelab.viz.style.install`` shows every matplotlib fi
 one image per column of panels (so that they stack on a phone), with alt text made from the
 panels' titles and axis labels. A page describes its figure better: when the cell sets
 ``mystnb: image: alt:``, this extension gives that text to each panel image (prefixed with
-"panel i of n" when there are several).
+"panel i of n" when there are several), followed by what the panel computed it shows, when it
+did (an energy plot: "Energy plot: the total energy is flat at 2.94 J ...").
 """
 from __future__ import annotations
 
@@ -25,13 +26,16 @@ def panel_alts(text: str, alt: str) -> str:
     --------
     >>> page = '<img src="a" alt="Figure panel: x" class="bl-panel"><img src="b" alt="y" class="bl-panel">'
     >>> panel_alts(page, "Left, a link; right, its energy")
-    '<img src="a" alt="panel 1 of 2: Left, a link; right, its energy" class="bl-panel"><img src="b" alt="panel 2 of 2: Left, a link; right, its energy" class="bl-panel">'
+    '<img src="a" alt="panel 1 of 2: Left, a link; right, its energy" class="bl-panel"><img src="b" alt="panel 2 of 2: Left, a link; right, its energy (y)" class="bl-panel">'
     """
     n = len(_PANEL.findall(text))
     count = iter(range(1, n + 1))
 
     def swap(m: re.Match) -> str:
         label = alt if n == 1 else f"panel {next(count)} of {n}: {alt}"
+        own = html.unescape(re.search(r'alt="([^"]*)"', m.group(0)).group(1))
+        if own and not own.startswith("Figure panel"):  # what the panel computed it shows: keep it
+            label = f"{label} ({own})"
         return f'{m.group(1)}alt="{html.escape(label)}"{m.group(2)}'
 
     return _PANEL.sub(swap, text)

@@ -1,0 +1,59 @@
+/*
+ * Keyboard access to content that scrolls sideways (WCAG 2.1.1; axe-core's
+ * scrollable-region-focusable): a figure, an animation or a display formula wider than the
+ * column can be scrolled only by a reader who can focus it. The theme does this for code
+ * blocks and cell outputs; here the same for the course's figures (.bl-figure), animation
+ * players and MathJax's display formulas. Such a region gets tabindex=0 and a name that
+ * says it scrolls, while it is wider than its box; it loses both when the window grows.
+ * Loaded on every page by book/_ext/accessibility.py.
+ */
+(function () {
+  "use strict";
+
+  var SELECTOR = ".bl-figure, div.animation, mjx-container[display='true'], .math-wrapper";
+  var NAME = "scrollable content: use the arrow keys to see all of it";
+
+  function update() {
+    document.querySelectorAll(SELECTOR).forEach(function (el) {
+      var style = getComputedStyle(el);
+      var scrolls = /(auto|scroll)/.test(style.overflowX + style.overflowY) &&
+        (el.scrollWidth > el.clientWidth + 1 || el.scrollHeight > el.clientHeight + 1);
+      if (scrolls && !el.hasAttribute("tabindex")) {
+        el.setAttribute("tabindex", "0");
+        el.dataset.blScrollFocus = "1";
+        if (!el.hasAttribute("role")) {
+          el.setAttribute("role", "group");
+          el.setAttribute("aria-label", NAME);
+          el.dataset.blScrollName = "1";
+        }
+      } else if (!scrolls && el.dataset.blScrollFocus) {
+        el.removeAttribute("tabindex");
+        delete el.dataset.blScrollFocus;
+        if (el.dataset.blScrollName) {
+          el.removeAttribute("role");
+          el.removeAttribute("aria-label");
+          delete el.dataset.blScrollName;
+        }
+      }
+    });
+  }
+
+  var pending = null;
+  function later() {
+    if (pending) { clearTimeout(pending); }
+    pending = setTimeout(function () { pending = null; update(); }, 150);
+  }
+
+  window.addEventListener("resize", later);
+  window.addEventListener("load", update);
+  if (document.readyState !== "loading") { update(); } else { document.addEventListener("DOMContentLoaded", update); }
+  // MathJax typesets after load: look again once it has finished
+  var tries = 0;
+  (function afterMath() {
+    if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+      MathJax.startup.promise.then(update);
+    } else if (++tries < 50) {
+      setTimeout(afterMath, 100);
+    }
+  })();
+})();

@@ -1,0 +1,246 @@
+"""Accessibility of the built site: WCAG 2.0/2.1 A and AA by axe-core, and a keyboard-only player.
+
+* axe-core (vendored from the npm registry into the git-ignored ``tests/_vendor/axe-core/`` by
+  ``scripts/build_book.py``, see :func:`build_book.fetch_axe`) runs in Chromium on every page of
+  ``_build/html`` at 390 px and 1280 px with the tags ``wcag2a``, ``wcag2aa``, ``wcag21a`` and
+  ``wcag21aa``; any violation fails the test, which prints the rule, the element and the page.
+  The per-rule counts are written to ``_build/a11y/axe_<width>.json``. On the same pages every
+  formula must carry MathJax's assistive MathML (what a screen reader reads).
+* An animation player is walked through with the keyboard alone: tab to its slider, scrub with
+  the arrow keys, Home and End, step with the "Next frame" button, play and pause; the slider's
+  spoken value and the live region say which frame and configuration are shown.
+* With ``prefers-reduced-motion: reduce`` nothing moves by itself and nothing transitions.
+
+Tests an existing ``_build/html``; ``tests/conftest.py`` runs this module after
+``tests/test_book.py`` (which builds the site). Needs Debian's ``chromium`` and npm.
+"""
+from __future__ import annotations
+
+import functools
+import http.server
+import json
+import re
+import sys
+import threading
+from collections import Counter
+from pathlib import Path
+from urllib.parse import urljoin
+
+import pytest
+
+from conftest import CHROMIUM, CHROMIUM_ARGS, NEEDS_CHROMIUM
+
+ROOT = Path(__file__).resolve().parents[1]
+SITE = ROOT / "_build" / "html"
+REPORTS = ROOT / "_build" / "a11y"
+PLAYER_PAGE = "book/ch2_zfl_springs.html"   # a chapter with an animation of one coordinate θ
+TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+
+pytestmark = [pytest.mark.slow, pytest.mark.browser, NEEDS_CHROMIUM]
+
+AXE_RUN = """async (tags) => {
+  if (window.MathJax && MathJax.startup && MathJax.startup.promise) { await MathJax.startup.promise; }
+  const r = await axe.run(document, {runOnly: {type: "tag", values: tags}, resultTypes: ["violations"]});
+  return r.violations.map(v => ({id: v.id, impact: v.impact,
+    nodes: v.nodes.map(n => ({target: n.target.join(" "), html: n.html.slice(0, 160),
+                              why: (n.failureSummary || "").replace(/\\s+/g, " ").slice(0, 220)}))}));
+}"""
+
+
+@pytest.fixture(scope="module")
+def axe_js() -> Path:
+    sys.path.insert(0, str(ROOT / "scripts"))
+    try:
+        import build_book
+    finally:
+        sys.path.pop(0)
+    return build_book.fetch_axe()
+
+
+@pytest.fixture(scope="module")
+def site() -> Path:
+    if not (SITE / "index.html").is_file():
+        pytest.skip("no built site in _build/html: run tests/test_book.py first (it builds the book) "
+                    "or `python scripts/build_book.py`")
+    return SITE
+
+
+class _Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+@pytest.fixture(scope="module")
+def server(site):
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_Quiet, directory=str(site)))
+    threading.Thread(target=httpd.serve_forever, daemon=True).start()
+    yield f"http://127.0.0.1:{httpd.server_address[1]}/"
+    httpd.shutdown()
+    httpd.server_close()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+def _pages(site: Path) -> list[str]:
+    pages = []
+    for p in sorted(site.rglob("*.html")):
+        rel = p.relative_to(site)
+        if rel.parts[0] in ("vendor", "_static", "_sources", "_images"):
+            continue
+        if re.search(r'http-equiv="Refresh" content="0;', p.read_text(errors="replace")):
+            continue  # a redirect-only page (the site's index) shows nothing
+        pages.append(str(rel))
+    return pages
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_axe_finds_no_wcag_21_aa_violation_on_any_page(site, server, browser, axe_js, width):
+    pages = _pages(site)
+    assert len(pages) >= 13, pages
+    ctx = browser.new_context(viewport={"width": width, "height": 900})
+    found: list[str] = []
+    per_rule: Counter = Counter()
+    per_rule_pages: dict = {}
+    for rel in pages:
+        page = ctx.new_page()
+        page.goto(urljoin(server, rel), wait_until="load")
+        page.add_script_tag(path=str(axe_js))
+        for v in page.evaluate(AXE_RUN, TAGS):
+            per_rule[v["id"]] += len(v["nodes"])
+            per_rule_pages.setdefault(v["id"], set()).add(rel)
+            for n in v["nodes"]:
+                found.append(f"{v['id']} ({v['impact']}) on {rel} at {width} px: {n['target']}\n"
+                             f"    {n['html']}\n    {n['why']}")
+        # MathJax's assistive MathML: a screen reader reads each formula from it
+        bare = page.evaluate("() => document.querySelectorAll('mjx-container:not(:has(> mjx-assistive-mml))').length")
+        if bare:
+            found.append(f"assistive-mathml on {rel} at {width} px: {bare} formulas without MathML for screen readers")
+        page.close()
+    ctx.close()
+    REPORTS.mkdir(parents=True, exist_ok=True)
+    (REPORTS / f"axe_{width}.json").write_text(json.dumps(
+        {"axe": "axe-core " + (axe_js.parent / "VERSION.txt").read_text().strip(), "tags": TAGS, "pages": len(pages),
+         "rules": {k: {"elements": n, "pages": sorted(per_rule_pages[k])} for k, n in per_rule.items()},
+         "violations": found},
+        indent=1))
+    summary = ", ".join(f"{k}: {n} elements on {len(per_rule_pages[k])} pages" for k, n in per_rule.most_common())
+    assert not found, f"{len(found)} axe-core violations at {width} px ({summary}):\n" + "\n".join(found[:60])
+
+
+# ------------------------------------------------------------------- the animation player
+STATE = """(el) => {
+  const p = el.closest("div.animation");
+  const s = p.querySelector("input.anim-slider");
+  return {value: +s.value, text: s.getAttribute("aria-valuetext") || "", name: s.getAttribute("aria-label") || "",
+          said: p.querySelector("[aria-live]").textContent, shown: p.querySelector(".bl-anim-status > span:first-child").textContent,
+          max: +s.max};
+}"""
+FOCUSED = """() => { const e = document.activeElement;
+  return e ? (e.matches("input.anim-slider") ? "slider" : (e.getAttribute("title") || e.tagName)) : ""; }"""
+
+
+def _tab_to(page, what: str, limit: int, back: bool = False) -> int:
+    """Press Tab (or Shift+Tab) until the focused element is ``what``; return how many presses."""
+    for n in range(1, limit + 1):
+        page.keyboard.press("Shift+Tab" if back else "Tab")
+        if page.evaluate(FOCUSED) == what:
+            return n
+    pytest.fail(f"{what!r} not reached with {limit} presses of {'Shift+' if back else ''}Tab; "
+                f"focus is on {page.evaluate(FOCUSED)!r}")
+
+
+def _frame_text(state: dict, frame: int) -> None:
+    assert state["value"] == frame, state
+    assert re.fullmatch(rf"frame {frame + 1} of {state['max'] + 1}: θ = -?\d+°", state["text"]), state
+    assert state["shown"] == state["text"], state
+
+
+def test_animation_player_by_keyboard_alone(site, server, browser):
+    ctx = browser.new_context(viewport={"width": 390, "height": 844})
+    page = ctx.new_page()
+    page.goto(urljoin(server, PLAYER_PAGE), wait_until="load")
+    page.wait_for_function("() => document.querySelector('div.animation .bl-anim-status span') "
+                           "&& /θ =/.test(document.querySelector('div.animation input.anim-slider')"
+                           ".getAttribute('aria-valuetext'))")
+    slider = page.locator("div.animation input.anim-slider").first
+    frames = int(slider.get_attribute("max")) + 1
+    # the page's first slider, reached from the top of the page with Tab alone
+    _tab_to(page, "slider", 400)
+    slider_handle = slider.element_handle()
+    state = page.evaluate(STATE, slider_handle)
+    assert state["name"] == "Frame"
+    _frame_text(state, 0)
+    page.keyboard.press("ArrowRight")
+    page.keyboard.press("ArrowRight")
+    _frame_text(page.evaluate(STATE, slider_handle), 2)
+    page.keyboard.press("End")
+    _frame_text(page.evaluate(STATE, slider_handle), frames - 1)
+    page.keyboard.press("Home")
+    _frame_text(page.evaluate(STATE, slider_handle), 0)
+    # step forward with the "Next frame" button: the live region says where it is
+    assert _tab_to(page, "Next frame", 10) <= 8
+    page.keyboard.press("Enter")
+    state = page.evaluate(STATE, slider_handle)
+    _frame_text(state, 1)
+    assert state["said"] == state["text"], state
+    # play (Space on "Play"), then pause (Enter on "Pause"): the frame advances, then stops
+    _tab_to(page, "Play", 3, back=True)
+    page.keyboard.press("Space")
+    page.wait_for_function("s => +s.value > 3", arg=slider_handle, timeout=10_000)
+    assert page.evaluate(STATE, slider_handle)["said"] == "playing"
+    _tab_to(page, "Pause", 3, back=True)
+    page.keyboard.press("Enter")
+    page.wait_for_function("s => s.closest('div.animation').querySelector('[aria-live]').textContent"
+                           ".startsWith('paused at frame')", arg=slider_handle, timeout=5_000)
+    state = page.evaluate(STATE, slider_handle)
+    assert state["said"] == f"paused at {state['text']}", state
+    stopped = state["value"]
+    # the focused button shows where the keyboard is
+    ring = page.evaluate("() => { const s = getComputedStyle(document.activeElement);"
+                         " return s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) > 0 || s.boxShadow !== 'none'; }")
+    assert ring, "the focused player button has no visible focus indicator"
+    page.keyboard.press("Tab")   # the frame stays where it was paused
+    assert page.evaluate(STATE, slider_handle)["value"] == stopped
+    ctx.close()
+
+
+def test_player_fits_a_phone_column(site, server, browser):
+    ctx = browser.new_context(viewport={"width": 390, "height": 844})
+    page = ctx.new_page()
+    page.goto(urljoin(server, PLAYER_PAGE), wait_until="load")
+    boxes = page.evaluate("""() => Array.from(document.querySelectorAll("div.animation")).map(p => {
+        const col = p.closest("article") || document.body, c = col.getBoundingClientRect();
+        const s = p.querySelector("input.anim-slider").getBoundingClientRect();
+        const b = Array.from(p.querySelectorAll(".anim-buttons button")).map(x => x.getBoundingClientRect());
+        return {left: c.left, right: c.right, slider: [s.left, s.right],
+                tops: b.map(r => Math.round(r.top)), ends: [Math.min(...b.map(r => r.left)), Math.max(...b.map(r => r.right))]};
+    })""")
+    assert boxes
+    for i, b in enumerate(boxes):
+        assert b["left"] - 0.5 <= b["slider"][0] and b["slider"][1] <= b["right"] + 0.5, (i, b)
+        assert b["left"] - 0.5 <= b["ends"][0] and b["ends"][1] <= b["right"] + 0.5, (i, b)
+        assert len(set(b["tops"])) == 1, f"player {i}: its buttons wrap onto {len(set(b['tops']))} lines"
+    ctx.close()
+
+
+def test_reduced_motion_nothing_moves_by_itself(site, server, browser):
+    ctx = browser.new_context(viewport={"width": 1280, "height": 900}, reduced_motion="reduce")
+    page = ctx.new_page()
+    page.goto(urljoin(server, PLAYER_PAGE), wait_until="load")
+    page.wait_for_function("() => Object.keys(window).some(k => /^anim[0-9a-f]{8,}/.test(k))")
+    timers = page.evaluate("() => Object.keys(window).filter(k => /^anim[0-9a-f]{8,}/.test(k))"
+                           ".filter(k => window[k] && window[k].timer)")
+    assert timers == [], f"animations that play by themselves: {timers}"
+    moving = page.evaluate("""() => Array.from(document.querySelectorAll("a, button, .bl-panel, img"))
+        .map(e => getComputedStyle(e)).filter(s => s.transitionDuration.split(",").some(d => parseFloat(d) > 0.02)
+            || s.animationName !== "none" && s.animationDuration.split(",").some(d => parseFloat(d) > 0.02)).length""")
+    assert moving == 0, f"{moving} elements still transition or animate with reduced motion"
+    ctx.close()
