@@ -57,9 +57,13 @@ def test_extension_spring_zfl_condition_and_error():
     s = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0, hooks=False)
     assert s.k == pytest.approx(81.7e9 * 1e-3 / (8 * 8 ** 3 * 40), rel=1e-14)
     assert s.body_length == pytest.approx(41e-3, rel=1e-14)
-    # two standard hooks add their inside diameters D - d: 41 + 2 * 7 mm between the load points
+    # two standard hooks add their inside diameters D - d: 2 * 7 mm between the load points; their
+    # deflection counts as G/E extra active coils (Shigley eq. 10-39: N_a = N_b + G/E), so the body of a
+    # hooked spring with N_a = 40 holds N_b = 40 - 81.7/196.5 coils, at the same rate
     hooked = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
-    assert hooked.body_length == pytest.approx(55e-3, rel=1e-14) and hooked.coil_length == s.body_length
+    n_b = 40 - 81.7 / 196.5
+    assert hooked.k == s.k and hooked.body_coils == pytest.approx(n_b, rel=1e-14)
+    assert hooked.body_length == pytest.approx(1e-3 * (n_b + 1) + 14e-3, rel=1e-14)
     ell = s.body_length - 2.0 / s.k
     L = np.linspace(s.body_length, 0.3, 7)
     assert np.allclose(s.force(L), 2.0 + s.k * (L - s.body_length), rtol=1e-13)
@@ -128,14 +132,16 @@ def test_standard_hooks_govern_the_lamps_static_spring():
 
 
 def test_hooks_count_in_the_free_length():
-    """1 mm wire, C = 10, 40 coils, largest preferred F_i: l = 41 + 2 * 9 - F_i / k mm (43.5), bare 25.5 mm."""
+    """1 mm wire, C = 10, N_a = 40, largest preferred F_i: bare l = 41 - F_i / k mm (25.5); with hooks the body
+    holds N_b = N_a - G/E coils (Shigley eq. 10-39) and the hooks add 2 (D - d): l = 25.5 - 0.42 + 18 = 43.0 mm (to 0.1)."""
     bare = sp.ExtensionSpring(1e-3, 10e-3, 40, hooks=False)
     Fi = bare.initial_tension_range()[1]
     hooked = sp.ExtensionSpring(1e-3, 10e-3, 40, initial_tension=Fi)
     bare = sp.ExtensionSpring(1e-3, 10e-3, 40, initial_tension=Fi, hooks=False)
     assert 1000 * bare.equivalent_free_length == pytest.approx(25.5, abs=0.05)
-    assert 1000 * hooked.equivalent_free_length == pytest.approx(43.5, abs=0.05)
-    assert hooked.equivalent_free_length - bare.equivalent_free_length == pytest.approx(2 * (10e-3 - 1e-3))
+    assert 1000 * hooked.equivalent_free_length == pytest.approx(43.0, abs=0.1)
+    assert hooked.equivalent_free_length - bare.equivalent_free_length == pytest.approx(
+        2 * (10e-3 - 1e-3) - 1e-3 * 81.7 / 196.5)
 
 
 # -------------------------------------------------------------------- selection
@@ -430,3 +436,99 @@ def test_extension_spring_refuses_bad_input():
         sp.hook_stresses(1.0, 1e-3, 8e-3, bend_radius=-1e-3)
     with pytest.raises(ValueError, match="hook index C2"):
         sp.hook_stresses(1.0, 1e-3, 8e-3, root_radius=0.4e-3)       # a bend tighter than the wire
+
+
+# ------------------------------------------------- review of issue 21 (regressions)
+def lamp_arm():
+    return bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+
+
+def test_pulley_strings_are_routed_to_stay_on_their_pulleys():
+    """The lamp arm's attachments swing only asin(c/b) about straight down from the pulleys; a string
+    coming down onto the pulley would have to bend the other way for half of each turn."""
+    from balancelab.methods.practice import routing as ro
+    from balancelab.methods.realize import pulley_string
+    lamp = lamp_arm()
+    sel = se.select_springs(lamp, 0.1, n=41, pulley_radius=0.001)
+    q = fo.configurations(lamp, None, 41)
+    for i, s in enumerate(sel.design.springs):
+        p = s.pulley
+        C = sel.design.world_points(q, [s.b])[..., 0, :]
+        st_ = pulley_string(s.a.point, p.radius, C, p.spring_direction, p.turn)
+        g = -np.asarray(p.spring_direction) / np.linalg.norm(p.spring_direction)   # incoming direction
+        u = C - st_.tangent_out
+        u /= np.linalg.norm(u, axis=-1, keepdims=True)                             # outgoing direction
+        # the string turns by +wrap (sense turn) from g to u, and never by more than a half turn here
+        assert np.allclose(p.turn * (g[0] * u[:, 1] - g[1] * u[:, 0]), np.sin(st_.wrap), atol=1e-9)
+        assert np.allclose(g @ u.T, np.cos(st_.wrap), atol=1e-9)
+        half = math.asin((0.15, 0.1)[i] / (0.3, 0.25)[i])      # c / b of each spring
+        assert 0 < st_.wrap.min() and st_.wrap.max() < math.pi
+        assert np.ptp(st_.wrap) == pytest.approx(2 * half, abs=0.02)
+    assert sel.within_budget            # a 1 mm pulley fits once the strings stay on their pulleys
+    # the routing that makes the string bend the wrong way is refused, naming it
+    from balancelab.core.elements import Pulley, Spring
+    down = lamp.replace(springs=[Spring(s.k, s.free_length, s.a, s.b, name=s.name,
+                                        realization=Pulley(0.0, (0.0, 1.0), 1)) for s in lamp.springs])
+    with pytest.raises(ValueError, match="bend the other way"):
+        se.select_springs(down, 0.1, n=41, pulley_radius=0.001)
+    assert not ro.stays_wrapped(ro.string_wrap(down, 0, down.springs[0].pulley, 0.001, 41))
+
+
+def test_hooked_spring_counts_body_coils_per_shigley_10_39():
+    for m in (sp.MUSIC_WIRE, sp.STAINLESS_302):
+        s = sp.ExtensionSpring(1e-3, 8e-3, 30, material=m)
+        assert s.active_coils - s.body_coils == pytest.approx(m.shear_modulus / m.youngs_modulus, rel=1e-14)
+        assert s.k == pytest.approx(m.shear_modulus * 1e-12 / (8 * 8e-3 ** 3 * 30), rel=1e-14)   # rate from N_a
+        assert s.coil_length == pytest.approx(1e-3 * (s.body_coils + 1), rel=1e-14)
+    bare = sp.ExtensionSpring(1e-3, 8e-3, 30, hooks=False)
+    assert bare.body_coils == 30
+    with pytest.raises(ValueError, match="active_coils"):
+        sp.ExtensionSpring(1e-3, 8e-3, 0.3)
+
+
+def test_unwindable_or_breaking_initial_tension_is_flagged_or_refused():
+    bare = sp.ExtensionSpring(1e-3, 8e-3, 40)
+    zfl = sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=bare.k * bare.body_length)
+    lo, hi = zfl.initial_tension_range()
+    assert zfl.is_zfl and zfl.initial_tension > hi and not zfl.windable
+    assert sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=hi).windable
+    with pytest.raises(ValueError, match=r"initial_tension.*\[0, "):
+        sp.ExtensionSpring(1e-3, 8e-3, 40, initial_tension=100.0)
+    with pytest.raises(ValueError, match="force"):
+        bare.stresses(-10.0)
+
+
+def test_fits_refuse_inputs_outside_their_range():
+    for d in (10e-3, 0.05e-3):
+        with pytest.raises(ValueError, match=r"wire_diameter must be in \[0.0001, 0.0065\]"):
+            sp.tensile_strength(d)
+    with pytest.raises(ValueError, match=r"wire_diameter must be in \[0.0003, 0.0025\]"):
+        sp.tensile_strength(3e-3, sp.STAINLESS_302)
+    for C in (1.0, 20.0):
+        with pytest.raises(ValueError, match=r"index C must be in \[3, 16\]"):
+            sp.initial_stress_range(C)
+    with pytest.raises(ValueError, match="tolerance k"):
+        to.Tolerances(k=-0.03)
+    with pytest.raises(ValueError, match="max_rate_error"):
+        se.select_spring(1e7, (0.1, 0.5))
+    assert se.select_spring(163.5, (0.1, 0.5), max_rate_error=0.01).error <= 0.01
+    fam = se.spring_family(sp.STAINLESS_302, active_coils=[20])
+    assert fam["d"].min() >= 0.3e-3 and fam["d"].max() <= 2.5e-3
+
+
+def test_max_length_bounds_the_spring_in_service():
+    lamp = lamp_arm()
+    free = se.select_springs(lamp, 0.1, n=41)
+    strokes = se.spring_strokes(lamp, 41)
+
+    def longest(choice, stroke):           # spring length at the longest passed-over length x_max
+        s = choice.spring
+        return s.body_length + stroke[1] - s.initial_tension / s.k
+
+    assert max(longest(c, st_) for c, st_ in zip(free.choices.values(), strokes)) > 0.5
+    short = se.select_springs(lamp, 0.1, n=41, max_length=0.6)
+    assert all(longest(c, st_) <= 0.6 for c, st_ in zip(short.choices.values(), strokes))
+    # the stroke alone is 0.45 m: no spring passes it within 0.3 m
+    with pytest.raises(ValueError, match="max_length"):
+        se.select_springs(lamp, 0.1, n=41, max_length=0.3)

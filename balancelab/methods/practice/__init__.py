@@ -10,6 +10,6 @@ loads). Course chapter 8 ("From ideal to real") uses them.
 What it may import: ``balancelab.core``, ``balancelab.mechanisms`` and the other method
 families' building blocks (``lecture``); never ``viz`` or ``course``.
 """
-from . import forces, friction, payload, selection, springs, tolerance
+from . import forces, friction, payload, routing, selection, springs, tolerance
 
-__all__ = ["forces", "friction", "payload", "selection", "springs", "tolerance"]
+__all__ = ["forces", "friction", "payload", "routing", "selection", "springs", "tolerance"]

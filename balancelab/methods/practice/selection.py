@@ -22,7 +22,8 @@ hooks* (static or for a number of cycles; standard hooks by default, whose lengt
 counts in the direct mode's body length). :func:`select_springs` does this for every ZFL
 spring, optionally moves the anchors to make the real rates balance exactly
 (``retune=True``, with :func:`balancelab.methods.practice.payload.rebalance`) and returns
-the residual torque curve of the built design. Over a pulley it includes the pulley's
+the residual torque curve of the built design. Over a pulley each string is routed so
+that it stays on its pulley (:mod:`.routing`), and the residual includes the pulley's
 radius (the exact string model of :func:`balancelab.methods.realize.pulley_energy`) and
 its friction: a pulley that loses the fraction ``pulley_friction`` of the string's
 tension changes each spring's generalized force by up to that fraction, in the sense
@@ -43,6 +44,7 @@ from ..lecture.lever import single_link_spring
 from ..realize import pulley_energy
 from .forces import configurations, generalized_force
 from .payload import rebalance
+from .routing import pulley_routing
 from .springs import (MUSIC_WIRE, WIRE_DIAMETERS, ExtensionSpring, Material, allowable_stress, hook_stresses,
                       initial_stress_range, wahl_factor)
 
@@ -58,7 +60,9 @@ def spring_family(material: Material = MUSIC_WIRE, wire_diameters=WIRE_DIAMETERS
     -------
     dict of numpy.ndarray
         ``d``, ``D`` (m), ``Na``, ``k`` (N/m), ``Fi_low``, ``Fi_high`` (N, preferred initial
-        tension), ``body_length`` (m, between the load points: coils and hooks) and the
+        tension), ``body_length`` (m, between the load points: ``N_b = N_a - G/E`` body coils
+        with hooks, and the hooks; wire diameters outside ``material.diameter_range`` are
+        left out) and the
         stresses per newton of pull (Pa/N) of the ``body`` and, with ``hooks``, of the
         ``hook_torsion`` and ``hook_bending`` (``"per_newton"``); ``material``; ``hooks``.
 
@@ -66,18 +70,25 @@ def spring_family(material: Material = MUSIC_WIRE, wire_diameters=WIRE_DIAMETERS
     --------
     >>> f = spring_family(wire_diameters=[1e-3], indices=[8.0], active_coils=[40])
     >>> round(float(f["k"][0]), 2), round(float(f["body_length"][0]), 4)
-    (498.66, 0.055)
+    (498.66, 0.0546)
     """
-    d, C, Na = (a.ravel() for a in np.meshgrid(np.asarray(wire_diameters, float), np.asarray(indices, float),
-                                                np.asarray(active_coils, float), indexing="ij"))
+    wire = np.asarray(wire_diameters, float)
+    lo_d, hi_d = material.diameter_range
+    wire = wire[(wire >= lo_d * (1 - 1e-12)) & (wire <= hi_d * (1 + 1e-12))]   # only where the strength fit holds
+    active = np.asarray(active_coils, float)
+    if hooks:
+        active = active[active > material.shear_modulus / material.youngs_modulus]
+    d, C, Na = (a.ravel() for a in np.meshgrid(wire, np.asarray(indices, float),
+                                                active, indexing="ij"))
     D = C * d
+    hook_coils = material.shear_modulus / material.youngs_modulus if hooks else 0.0   # N_a = N_b + G/E
     lo, hi = initial_stress_range(C)
     area = np.pi * d ** 3 / (8 * D)
     per_newton = {"body": wahl_factor(C) / area}
     if hooks:
         per_newton["hook_bending"], per_newton["hook_torsion"] = hook_stresses(1.0, d, D)
     return {"d": d, "D": D, "Na": Na, "k": material.shear_modulus * d / (8 * C ** 3 * Na),
-            "Fi_low": lo * area, "Fi_high": hi * area, "body_length": d * (Na + 1) + (2 * (D - d) if hooks else 0.0),
+            "Fi_low": lo * area, "Fi_high": hi * area, "body_length": d * (Na - hook_coils + 1) + (2 * (D - d) if hooks else 0.0),
             "per_newton": per_newton, "material": material, "hooks": bool(hooks)}
 
 
@@ -97,7 +108,8 @@ class SpringChoice(NamedTuple):
 
 def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | None = None,
                   family: dict | None = None, max_body_length: float = np.inf,
-                  rate_tolerance: float = 0.01) -> SpringChoice:
+                  rate_tolerance: float = 0.01, max_length: float = np.inf,
+                  max_rate_error: float = 0.5) -> SpringChoice:
     """The real extension spring closest to a ZFL spring of rate ``k`` over a stroke.
 
     Parameters
@@ -114,6 +126,14 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
         Candidates from :func:`spring_family` (music wire by default).
     max_body_length : float
         Longest acceptable closed body (m).
+    max_length : float
+        Longest acceptable length (m) between the load points in service (at the longest
+        stroke), > 0: what the mechanism has room for.
+    max_rate_error : float
+        Over a pulley, the largest acceptable relative rate error ``|k_real - k| / k`` of
+        the chosen spring, > 0; when even the best candidate is further off, ValueError
+        instead of a spring. Hung directly the rate is traded against the free length, so
+        there the refusal comes only when the force error reaches 100 % of ``k L_max``.
     rate_tolerance : float
         Among the candidates whose error is within this (or within the smallest error
         found, if larger), the one with the least wire (``d^2 D N_a``) is chosen.
@@ -126,7 +146,8 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
     Raises
     ------
     ValueError
-        When no candidate survives the stroke.
+        When no candidate survives the stroke within the lengths, or the best error
+        rate error exceeds ``max_rate_error``.
 
     Examples
     --------
@@ -136,6 +157,10 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
     """
     k = finite_real("k (N/m)", k, positive=True)
     rate_tolerance = finite_real("rate_tolerance", rate_tolerance, nonnegative=True)
+    max_rate_error = finite_real("max_rate_error", max_rate_error, positive=True)
+    max_length = float(max_length)
+    if not max_length > 0:
+        raise ValueError(f"max_length (m) must be > 0, got {max_length!r}")
     lmin, lmax = (finite_real("stroke (m)", v, nonnegative=True) for v in stroke)
     if not lmin <= lmax or lmax == 0:
         raise ValueError(f"stroke must be (shortest, longest) with 0 <= shortest <= longest, longest > 0, got {stroke!r}")
@@ -147,20 +172,28 @@ def select_spring(k: float, stroke, *, mode: str = "pulley", cycles: float | Non
     if mode == "pulley":
         Fi = f["Fi_low"]
         ok = (lmin >= Fi / kc) & (kc * lmax <= F_allow)
+        longest = Lb + lmax - Fi / kc                 # the spring itself, at the longest passed-over length
         err = np.abs(kc - k) / k
     else:
         Fi = np.clip(kc * Lb, f["Fi_low"], f["Fi_high"])
         ell = Lb - Fi / kc
         ok = (lmin >= Lb) & (kc * (lmax - ell) <= F_allow)
+        longest = np.full_like(kc, lmax)
         err = np.maximum(np.abs((kc - k) * lmin - kc * ell), np.abs((kc - k) * lmax - kc * ell)) / (k * lmax)
-    ok &= Lb <= max_body_length
+    ok &= (Lb <= max_body_length) & (longest <= max_length)
     if not ok.any():
         raise ValueError(f"no {mode} spring of the family survives a stroke of {lmin:.4g}-{lmax:.4g} m at "
-                         f"{k:.4g} N/m; try the other mode, a longer allowed body or another material")
+                         f"{k:.4g} N/m within max_body_length {max_body_length:.4g} m and max_length "
+                         f"{max_length:.4g} m; try the other mode, longer allowed lengths or another material")
     err_ok = np.where(ok, err, np.inf)
     good = err_ok <= max(rate_tolerance, float(err_ok.min()))
     mass = np.where(good, f["d"] ** 2 * f["D"] * f["Na"], np.inf)  # the least wire among the good ones
     i = int(np.argmin(mass))
+    if (mode == "pulley" and abs(kc[i] - k) / k > max_rate_error) or err[i] >= 1:
+        raise ValueError(f"the best {mode} spring of the family has a rate {kc[i]:.4g} N/m ({100 * abs(kc[i] - k) / k:.3g}"
+                         f" % off the ZFL spring's {k:.4g} N/m; max_rate_error = {100 * max_rate_error:.3g} % over a "
+                         f"pulley) and a force error of {100 * err[i]:.3g} % of k L_max: no spring of the family can "
+                         f"stand in for it over {lmin:.4g}-{lmax:.4g} m")
     spring = ExtensionSpring(float(f["d"][i]), float(f["D"][i]), float(f["Na"][i]), float(Fi[i]), f["material"],
                              hooks=f["hooks"])
     return SpringChoice(spring, float(err[i]), mode)
@@ -199,13 +232,10 @@ def spring_strokes(design: Design, n: int = 61) -> list[tuple[float, float]]:
     return [(float(L[:, i].min()), float(L[:, i].max())) for i in range(len(design.springs))]
 
 
-def _built(s: Spring, choice: SpringChoice, radius: float = 0.0) -> Spring:
+def _built(s: Spring, choice: SpringChoice, routing: Pulley | None) -> Spring:
     real = choice.spring
     if choice.mode == "pulley":
-        if s.pulley is not None:
-            realization = Pulley(radius, s.pulley.spring_direction, s.pulley.turn)
-        else:
-            realization = Pulley(radius) if s.a.body == 0 else s.realization
+        realization = routing if routing is not None else s.realization
         return Spring(real.k, 0.0, s.a, s.b, name=s.name, realization=realization)
     return Spring(real.k, real.equivalent_free_length, s.a, s.b, name=s.name, realization="coil")
 
@@ -234,7 +264,7 @@ def _pulley_friction(design: Design, q: np.ndarray, fraction: float) -> np.ndarr
 
 def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycles: float | None = None,
                    retune: bool = False, family: dict | None = None, n: int = 61, pulley_radius: float = 0.0,
-                   pulley_friction: float = 0.0) -> Selection:
+                   pulley_friction: float = 0.0, max_length: float = np.inf) -> Selection:
     """Real springs for every ZFL spring of ``design`` and the residual torque of the result.
 
     Parameters
@@ -257,10 +287,16 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
         Radius (m), >= 0, of every pulley (pulley mode); 0 is the ideal point anchor.
     pulley_friction : float
         Fraction of the string's tension the pulley's bearing loses, in [0, 1) (pulley mode).
+    max_length : float
+        Longest length (m) between a spring's load points in service (room in the
+        mechanism), as in :func:`select_spring`.
 
     Returns
     -------
     Selection
+        Over a pulley, each string is routed so that it stays on its pulley
+        (:func:`.routing.pulley_routing`): a spring's own routing if valid (else
+        ValueError), otherwise the valid one with the least wrap.
 
     Examples
     --------
@@ -284,8 +320,10 @@ def select_springs(design: Design, budget: float, *, mode: str = "pulley", cycle
     choices, built = {}, list(design.springs)
     for i, s in enumerate(design.springs):
         if s.is_zfl:
-            choices[s.name or str(i)] = select_spring(s.k, strokes[i], mode=mode, cycles=cycles, family=family)
-            built[i] = _built(s, choices[s.name or str(i)], radius)
+            choices[s.name or str(i)] = select_spring(s.k, strokes[i], mode=mode, cycles=cycles, family=family,
+                                                       max_length=max_length)
+            routing = pulley_routing(design, i, radius, n) if mode == "pulley" and s.a.body == 0 else None
+            built[i] = _built(s, choices[s.name or str(i)], routing)
     real = design.replace(springs=built, name=f"{design.name}, real springs ({mode})")
     if retune:
         real = rebalance(real, "anchor", [i for i, s in enumerate(design.springs) if s.is_zfl], n=n)

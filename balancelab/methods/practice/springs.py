@@ -6,8 +6,11 @@ for instance Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, ch. 1
 
 * rate ``k = G d^4 / (8 D^3 N_a)`` (wire diameter ``d``, mean coil diameter ``D``,
   active coils ``N_a``, shear modulus ``G``); spring index ``C = D / d``;
-* closed body length ``L_b = d (N_b + 1)`` with ``N_b`` body coils (here ``N_b = N_a``:
-  hook ends add no active coils in this simple model);
+* closed body length ``L_b = d (N_b + 1)`` with ``N_b`` body coils. The coil count the API
+  takes (``active_coils``) is ``N_a``, the one in the rate. For an extension spring with
+  hooks the hooks' deflection counts as extra active turns: ``N_a = N_b + G / E``
+  (Shigley eq. 10-39; ``G/E`` ≈ 0.42 coil for music wire), so its body holds
+  ``N_b = N_a - G / E`` coils; without hooks (a bare body) ``N_b = N_a``;
 * uncorrected shear stress ``tau = 8 F D / (pi d^3)``; with the Wahl curvature
   correction ``K_W = (4C - 1)/(4C - 4) + 0.615 / C``, the maximum stress is ``K_W tau``;
 * preferred range of the uncorrected initial-tension stress as a function of ``C``
@@ -67,7 +70,9 @@ class Material(NamedTuple):
     (MPa mm^m) and ``strength_m``; ``static_fraction``: allowable body torsion stress in
     static service as a fraction of ``S_ut``; ``source``: where the numbers come from;
     ``hook_torsion_fraction`` and ``hook_bending_fraction``: the static allowables of the
-    hooks (torsion at the hook's root, bending at its bend) as fractions of ``S_ut``.
+    hooks (torsion at the hook's root, bending at its bend) as fractions of ``S_ut``;
+    ``youngs_modulus`` (Pa); ``diameter_range`` (m): the wire diameters the strength fit
+    covers.
     """
 
     name: str
@@ -78,14 +83,18 @@ class Material(NamedTuple):
     source: str
     hook_torsion_fraction: float = 0.40
     hook_bending_fraction: float = 0.75
+    youngs_modulus: float = 196.5e9
+    diameter_range: tuple = (0.10e-3, 6.5e-3)
 
 
 _SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, tables 10-4, 10-5, 10-7"
 
 #: Music wire (ASTM A228), valid for wire diameters 0.10-6.5 mm.
-MUSIC_WIRE = Material("music wire (ASTM A228)", 81.7e9, 2211.0, 0.145, 0.45, _SHIGLEY)
+MUSIC_WIRE = Material("music wire (ASTM A228)", 81.7e9, 2211.0, 0.145, 0.45, _SHIGLEY, 0.40, 0.75, 196.5e9,
+                      (0.10e-3, 6.5e-3))
 #: Stainless steel 302 (ASTM A313), valid for wire diameters 0.3-2.5 mm.
-STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.0e9, 1867.0, 0.146, 0.35, _SHIGLEY, 0.30, 0.55)
+STAINLESS_302 = Material("stainless steel 302 (ASTM A313)", 69.0e9, 1867.0, 0.146, 0.35, _SHIGLEY, 0.30, 0.55,
+                         193.0e9, (0.3e-3, 2.5e-3))
 #: The bundled materials by short name.
 MATERIALS = {"music_wire": MUSIC_WIRE, "stainless_302": STAINLESS_302}
 
@@ -188,7 +197,8 @@ def shear_stress(force, wire_diameter, coil_diameter, corrected: bool = True):
 def initial_stress_range(index):
     """Preferred range (Pa) of the uncorrected initial-tension stress for spring index ``C``.
 
-    ``tau_i = 231 / exp(0.105 C) +- 6.9 (4 - (C - 3) / 6.5)`` MPa (Shigley eq. 10-48).
+    ``tau_i = 231 / exp(0.105 C) +- 6.9 (4 - (C - 3) / 6.5)`` MPa (Shigley eq. 10-48), a
+    fit to the preferred band over indices ``C`` in [3, 16]; outside it raises ValueError.
 
     Returns
     -------
@@ -202,6 +212,8 @@ def initial_stress_range(index):
     (98.6, 147.4)
     """
     C = _positive("index C", index)
+    if np.any((C < 3.0) | (C > 16.0)):
+        raise ValueError(f"index C must be in [3, 16] (the range of the preferred initial-stress fit), got {index!r}")
     mid = 231.0 / np.exp(0.105 * C)
     half = 6.9 * (4.0 - (C - 3.0) / 6.5)
     return (mid - half) * 1e6, (mid + half) * 1e6
@@ -210,12 +222,20 @@ def initial_stress_range(index):
 def tensile_strength(wire_diameter, material: Material = MUSIC_WIRE):
     """Minimum tensile strength ``S_ut = A / d^m`` (Pa), ``d`` in mm inside the formula.
 
+    The fit holds only over ``material.diameter_range`` (music wire 0.10-6.5 mm); a wire
+    outside it raises ValueError.
+
     Examples
     --------
     >>> round(float(tensile_strength(1e-3)) / 1e6)
     2211
     """
-    d_mm = _positive("wire_diameter (m)", wire_diameter) * 1000
+    d = _positive("wire_diameter (m)", wire_diameter)
+    lo, hi = material.diameter_range
+    if np.any((d < lo * (1 - 1e-12)) | (d > hi * (1 + 1e-12))):
+        raise ValueError(f"wire_diameter must be in [{lo:.4g}, {hi:.4g}] m for {material.name} "
+                         f"(the range of its strength fit), got {wire_diameter!r}")
+    d_mm = d * 1000
     return material.strength_A / d_mm ** material.strength_m * 1e6
 
 
@@ -337,9 +357,12 @@ class ExtensionSpring:
     coil_diameter : float
         Mean coil diameter ``D`` (m), with index ``C = D/d`` in (3, 16].
     active_coils : float
-        ``N_a`` (= body coils in this model), > 0.
+        ``N_a``, the coil count in the rate (with hooks ``> G/E``: the body then holds
+        ``N_b = N_a - G/E`` coils, Shigley eq. 10-39; see :attr:`body_coils`).
     initial_tension : float
-        ``F_i`` (N), >= 0; see :meth:`initial_tension_range` for what can be wound.
+        ``F_i`` (N), from 0 up to the static :meth:`max_force` (a larger one breaks the
+        spring before it is stretched); :attr:`windable` says whether it lies within the
+        preferred range that can be wound (:meth:`initial_tension_range`).
     material : Material
     end_length : float
         Further length (m), >= 0, between the load points (beyond the hooks).
@@ -351,8 +374,10 @@ class ExtensionSpring:
     Examples
     --------
     >>> s = ExtensionSpring(1e-3, 8e-3, 40, initial_tension=2.0)
-    >>> round(s.k, 2), round(s.coil_length, 4), round(s.body_length, 4), round(s.equivalent_free_length, 4)
-    (498.66, 0.041, 0.055, 0.051)
+    >>> round(s.k, 2), round(s.body_coils, 2), round(s.body_length, 4), round(s.equivalent_free_length, 4)
+    (498.66, 39.58, 0.0546, 0.0506)
+    >>> s.windable
+    True
     >>> s.governing()
     'hook_torsion'
     """
@@ -371,12 +396,20 @@ class ExtensionSpring:
         if not 3.0 < D / d <= 16.0:
             raise ValueError(f"spring index C = coil_diameter / wire_diameter must be in (3, 16], got {D / d:.4g}")
         finite_real("active_coils", self.active_coils, positive=True)
-        finite_real("initial_tension (N)", self.initial_tension, nonnegative=True)
-        finite_real("end_length (m)", self.end_length, nonnegative=True)
         if not isinstance(self.material, Material):
             raise TypeError(f"material must be a Material, got {type(self.material).__name__}")
         if not isinstance(self.hooks, (bool, np.bool_)):
             raise TypeError(f"hooks must be True or False, got {self.hooks!r}")
+        finite_real("end_length (m)", self.end_length, nonnegative=True)
+        if self.hooks and self.active_coils <= self._hook_coils:
+            raise ValueError(f"active_coils must be > G/E = {self._hook_coils:.3f} for a spring with hooks, "
+                             f"got {self.active_coils}")
+        Fi = finite_real("initial_tension (N)", self.initial_tension, nonnegative=True)
+        top = self.max_force()
+        if Fi > top:
+            raise ValueError(f"initial_tension (the initial tension, N) must be in [0, {top:.4g}] (the static "
+                             f"max_force of this spring; windable: {self.initial_tension_range()[1]:.4g} N at most), "
+                             f"got {Fi}")
 
     @property
     def index(self) -> float:
@@ -390,9 +423,18 @@ class ExtensionSpring:
                                  self.material.shear_modulus))
 
     @property
+    def _hook_coils(self) -> float:
+        return self.material.shear_modulus / self.material.youngs_modulus if self.hooks else 0.0
+
+    @property
+    def body_coils(self) -> float:
+        """Coils in the body ``N_b``: ``N_a - G/E`` with hooks (Shigley eq. 10-39), ``N_a`` without."""
+        return self.active_coils - self._hook_coils
+
+    @property
     def coil_length(self) -> float:
-        """Closed length of the coils (m): ``d (N_a + 1)``."""
-        return self.wire_diameter * (self.active_coils + 1)
+        """Closed length of the coils (m): ``d (N_b + 1)``."""
+        return self.wire_diameter * (self.body_coils + 1)
 
     @property
     def hook_length(self) -> float:
@@ -410,8 +452,17 @@ class ExtensionSpring:
         return self.body_length - self.initial_tension / self.k
 
     @property
+    def windable(self) -> bool:
+        """True when ``F_i`` is at most the top of the preferred range (:meth:`initial_tension_range`)."""
+        return self.initial_tension <= self.initial_tension_range()[1] * (1 + 1e-12)
+
+    @property
     def is_zfl(self) -> bool:
-        """True when ``F_i = k L_b`` to 1e-9 relative (the spring is exactly zero-free-length)."""
+        """True when ``F_i = k L_b`` to 1e-9 relative: the force law is zero-free-length.
+
+        Says nothing about whether it can be made: check :attr:`windable` too (an exactly
+        ZFL extension spring is never windable within the preferred range, chapter 8).
+        """
         return abs(self.equivalent_free_length) <= 1e-9 * self.body_length
 
     def initial_tension_range(self) -> tuple[float, float]:
@@ -426,12 +477,15 @@ class ExtensionSpring:
         return np.where(L >= self.body_length, self.k * (L - self.equivalent_free_length), np.nan)
 
     def stress(self, force):
-        """Largest corrected shear stress (Pa) in the body at the pull ``force`` (N)."""
-        return shear_stress(force, self.wire_diameter, self.coil_diameter)
+        """Largest corrected shear stress (Pa) in the body at the pull ``force`` (N, >= 0)."""
+        F = np.asarray(force, dtype=float)
+        if not np.all(np.isfinite(F)) or np.any(F < 0):
+            raise ValueError(f"force must be finite and >= 0 N (an extension spring only pulls), got {force!r}")
+        return shear_stress(F, self.wire_diameter, self.coil_diameter)
 
     def stresses(self, force) -> dict:
         """Stresses (Pa) at the pull ``force`` (N): ``body`` and, with hooks, ``hook_torsion`` and ``hook_bending``."""
-        out = {"body": self.stress(force)}
+        out = {"body": self.stress(force)}     # checks force >= 0
         if self.hooks:
             out["hook_bending"], out["hook_torsion"] = hook_stresses(force, self.wire_diameter, self.coil_diameter)
         return out

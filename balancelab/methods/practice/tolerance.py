@@ -25,18 +25,33 @@ from .forces import batch_generalized_force, configurations
 __all__ = ["Tolerances", "MonteCarloResult", "monte_carlo", "sensitivities"]
 
 
-class Tolerances(NamedTuple):
-    """Tolerances of a built design (standard deviations, or half-widths for ``uniform``).
-
-    ``k``: relative error of every spring rate (0.05 = 5 %); ``free_length``: absolute
-    error of every free length (m); ``attachment``: absolute error of each coordinate of
-    every spring end (m); ``mass``: relative error of every load (a mass error).
-    """
-
+class _TolerancesFields(NamedTuple):
     k: float = 0.0
     free_length: float = 0.0
     attachment: float = 0.0
     mass: float = 0.0
+
+
+class Tolerances(_TolerancesFields):
+    """Tolerances of a built design (standard deviations, or half-widths for ``uniform``).
+
+    ``k``: relative error of every spring rate (0.05 = 5 %); ``free_length``: absolute
+    error of every free length (m); ``attachment``: absolute error of each coordinate of
+    every spring end (m); ``mass``: relative error of every load (a mass error). Each
+    must be finite and >= 0 (checked on construction).
+
+    Examples
+    --------
+    >>> Tolerances(k=0.03).k
+    0.03
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, k: float = 0.0, free_length: float = 0.0, attachment: float = 0.0, mass: float = 0.0):
+        values = {name: finite_real(f"tolerance {name} (>= 0)", v, nonnegative=True)
+                  for name, v in zip(_TolerancesFields._fields, (k, free_length, attachment, mass))}
+        return super().__new__(cls, **values)
 
 
 class MonteCarloResult(NamedTuple):
