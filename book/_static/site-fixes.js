@@ -1,19 +1,19 @@
 /*
- * Two small fixes of the themes' behaviour, on every page.
+ * Small fixes of the themes' behaviour, on every page.
  *
  * 1. The theme button: pydata-sphinx-theme cycles light -> auto -> dark (or dark -> auto ->
  *    light); when "auto" resolves to the theme already shown, a click changes nothing visible.
  *    Before the theme's own handler runs, a mode that would look the same is skipped, so every
  *    click switches between light and dark.
+ * 2. Search excerpts: Sphinx builds them from the text of the page's [role=main] element, which
+ *    here also holds the launch and download buttons ("Binder", ".ipynb" ...), the print-only
+ *    contents and the previous/next links; they are removed before the excerpt is taken, and the
+ *    excerpt is taken around the searched word (see makeSearchSummary below).
  * 3. The title of a solution (a dropdown) opens it: sphinx-togglebutton handles a click on the
  *    title bar itself, but a click on the title's link ("Solution to Exercise 1.1") followed the
  *    link to the exercise and threw "ReferenceError: button is not defined" (togglebutton.js).
  *    A click anywhere in a toggle's title is turned into a click of its button.
  * 4. Search excerpts read as text: maths (\(\theta = 90°\)) becomes plain symbols, code is left out.
- * 2. Search excerpts: Sphinx builds them from the text of the page's [role=main] element, which
- *    here also holds the launch and download buttons ("Binder", ".ipynb" ...), the print-only
- *    contents and the previous/next links; they are removed before the excerpt is taken, and the
- *    excerpt is taken around the searched word (see makeSearchSummary below).
  */
 (function () {
   "use strict";
