@@ -53,7 +53,8 @@ def _role(m: re.Match, resolve=None) -> str:
             return found
         return _KINDS.get(target.split("-")[0], "the section") + " on the course site"
     if role == "doc":
-        return f"the page *{target.split('/')[-1].replace('_', ' ')}*"
+        found = resolve(role, target) if resolve is not None else None
+        return f"*{found}*" if found else f"the page *{target.split('/')[-1].replace('_', ' ')}*"
     if role == "math":
         return f"${target}$"
     return target
@@ -195,6 +196,11 @@ def resolver(app):
         return ".".join(map(str, nums)) if nums else None
 
     def resolve(role, label):
+        if role == "doc":
+            for docname, title in env.titles.items():
+                if docname == label.lstrip("/") or docname.endswith("/" + label):
+                    return title.astext()
+            return None
         if role == "eq":
             math = env.get_domain("math")
             found = math.equations.get(label) if hasattr(math, "equations") else None
