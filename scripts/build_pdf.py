@@ -184,6 +184,7 @@ def build_pdf(site: Path = SITE) -> dict:
             page.emulate_media(media="print")
             report = page.evaluate(FIT_AND_REPORT_JS)
             page.pdf(path=str(site / PDF_NAME), format="A4", print_background=True, prefer_css_page_size=True,
+                     outline=True, tagged=True,
                      display_header_footer=True, header_template="<span></span>",
                      footer_template='<div style="font-size:8px;width:100%;text-align:center;">'
                                      '<span class="pageNumber"></span> / <span class="totalPages"></span></div>')
