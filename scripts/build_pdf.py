@@ -45,6 +45,7 @@ html, body { background: #fff !important; }
 .bd-main .bd-content .bd-article-container { max-width: none !important; padding: 0 !important; }
 .bd-page-width { max-width: none !important; }
 section.bl-chapter { break-before: page; }
+section.bl-chapter h1, .bl-title-page h1 { display: block !important; visibility: visible !important; }
 section.bl-chapter:first-of-type { break-before: auto; }
 img, figure, .bl-figure, div.animation, mjx-container[display="true"], table, pre,
 .admonition-title, h1, h2, h3, h4 { break-inside: avoid; }
