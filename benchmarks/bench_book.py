@@ -8,7 +8,10 @@ Rows (name, value, unit, target):
 * total size of the site: < 25 MB;
 * weight of the heaviest page: its HTML plus the images it shows: < 3 MB;
 * the scripts, style sheets and fonts every page loads (downloaded once, then cached by the
-  browser; MathJax's on-demand parts aside): for information.
+  browser; MathJax's on-demand parts aside): for information;
+* each chapter's first visit in Chromium (every byte the page fetches with an empty cache,
+  its own inline figures left out): < 1.5 MB (:func:`first_visit_weights`);
+* the printable course's build time (Chromium printing the whole course, scripts/build_pdf.py).
 
 The cold build re-executes everything, so this benchmark takes a few minutes.
 """
@@ -68,6 +71,50 @@ def page_weight(page: Path, site: Path = SITE, shared: bool = False) -> int:
     return total
 
 
+_FIGURE = re.compile(r'src="data:image/[^"]*"')
+
+
+def first_visit_weights(site: Path = SITE) -> dict:
+    """Bytes each page of the book fetches on a first visit (empty cache), in Chromium, without
+    the page's own figures (inline PNG data in its HTML).
+
+    Returns
+    -------
+    dict of str to int
+        Page (``book/ch1_counterweights.html`` ...) to bytes.
+    """
+    import functools
+    import http.server
+    import threading
+
+    from playwright.sync_api import sync_playwright
+
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args):
+            pass
+
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Quiet, directory=str(site)))
+    threading.Thread(target=httpd.serve_forever, daemon=True).start()
+    out = {}
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=shutil.which("chromium"), args=["--headless", "--no-sandbox"])
+            for page_file in sorted((site / "book").glob("*.html")):
+                rel = str(page_file.relative_to(site))
+                ctx = browser.new_context()
+                page = ctx.new_page()
+                sizes: list[int] = []
+                page.on("requestfinished", lambda r: sizes.append(r.sizes()["responseBodySize"]))
+                page.goto(f"http://127.0.0.1:{httpd.server_address[1]}/{rel}", wait_until="networkidle")
+                figures = sum(len(m) for m in _FIGURE.findall(page_file.read_text(encoding="utf-8")))
+                out[rel] = sum(sizes) - figures
+                ctx.close()
+            browser.close()
+    finally:
+        httpd.shutdown()
+    return out
+
+
 def _sizes() -> tuple[float, str, float, float]:
     files = [p for p in SITE.rglob("*") if p.is_file()]
     total = sum(p.stat().st_size for p in files) / 1e6
@@ -90,11 +137,16 @@ def run() -> list[tuple[str, float, str, str]]:
     finally:
         TOUCHED.write_text(original)
     total, page, page_mb, shared_mb = _sizes()
-    return [
+    visits = [(f"book: first visit of {name.split('/')[-1][:-5]} (without its figures)", b / 1e6, "MB", "< 1.5 MB")
+              for name, b in first_visit_weights().items()]
+    report = SITE / "balancelab-course.json"
+    pdf = [("book: printable course (Chromium, whole course)",
+            float(__import__("json").loads(report.read_text())["seconds"]), "s", "info")] if report.is_file() else []
+    return visits + pdf + [
         ("book: cold full build (all notebooks executed)", cold, "s", "< 300 s"),
         (f"book: cached rebuild after editing {TOUCHED.stem}", warm, "s", "< 30 s"),
         (f"book: slowest chapter ({chapter})", slowest, "s", "info"),
-        ("book: total site size", total, "MB", "< 25 MB"),
+        ("book: total site size", total, "MB", "< 15 MB"),
         (f"book: heaviest page, HTML and images ({page})", page_mb, "MB", "< 3 MB"),
         ("book: scripts, styles and fonts every page loads", shared_mb, "MB", "info"),
     ]

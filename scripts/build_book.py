@@ -5,6 +5,7 @@ Usage::
     python scripts/build_book.py            # cached execution, warnings are errors
     python scripts/build_book.py --force    # re-execute every chapter (what the tests do)
     python scripts/build_book.py --assets   # only fetch the offline assets (and axe-core)
+    python scripts/build_book.py --no-pdf   # skip the printable course (scripts/build_pdf.py)
 
 The site must load nothing from a CDN, so MathJax 3, require.js and
 ``@jupyter-widgets/html-manager`` are taken from the npm registry (``npm pack`` with
@@ -219,6 +220,7 @@ def main(argv=None) -> int:
     p.add_argument("--all", action="store_true", help="re-write every page")
     p.add_argument("--assets", action="store_true", help="only fetch the offline assets")
     p.add_argument("--quiet", action="store_true")
+    p.add_argument("--no-pdf", action="store_true", help="do not print the course into a PDF")
     p.add_argument("--toc", help="another table of contents, for working on a few pages")
     a = p.parse_args(argv)
     if a.assets:
@@ -228,6 +230,12 @@ def main(argv=None) -> int:
     t = build(force=a.force, all_pages=a.all, quiet=a.quiet, toc=a.toc)
     fetch_axe()  # for the accessibility test of the site just built
     print(f"\nbook built in {t:.1f} s: open {OUT / 'index.html'}")
+    if not a.no_pdf and a.toc is None:
+        sys.path.insert(0, str(ROOT / "scripts"))
+        import build_pdf
+
+        r = build_pdf.build_pdf(OUT)
+        print(f"printable course: {OUT / build_pdf.PDF_NAME} ({r['seconds']} s)")
     return 0
 
 

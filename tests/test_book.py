@@ -143,6 +143,65 @@ def test_downloaded_notebooks_are_plain_jupyter_without_solutions(site):
         assert nb.metadata["kernelspec"]["name"] == "python3"
 
 
+def test_downloaded_notebooks_have_the_course_title_and_no_raw_labels(site):
+    import nbformat
+
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    labels = set()
+    for name in CHAPTERS:
+        labels |= set(re.findall(r"^\(([\w:.-]+)\)=", (ROOT / "book" / f"{name}.md").read_text(), re.M))
+        labels |= set(re.findall(r":label: ([\w:.-]+)", (ROOT / "book" / f"{name}.md").read_text()))
+    for name in NOTEBOOKS:
+        nb = nbformat.read(str(site / "_sources" / "book" / f"{name}.ipynb"), as_version=4)
+        first = nb.cells[0].source
+        assert first.startswith(f"*{cfg['title']}: "), f"{name}.ipynb starts {first[:60]!r}"
+        assert "not set" not in first.lower()
+        text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+        raw = sorted(lab for lab in labels if re.search(r"(?<![\w-])" + re.escape(lab) + r"(?![\w-])", text))
+        assert not raw, f"{name}.ipynb names raw labels: {raw[:8]}"
+
+
+def test_download_menu_offers_the_notebook_and_the_course_pdf_not_the_source(site):
+    assert not list((site / "_sources").rglob("*.md")), "the MyST sources (with solutions) are published"
+    for name in NOTEBOOKS:
+        text = (site / "book" / f"{name}.html").read_text()
+        assert "download-source-button" not in text, name
+        assert "window.print()" not in text, name
+        assert 'href="../balancelab-course.pdf"' in text, f"{name}: no link to the printable course"
+    assert not (site / "genindex.html").exists() and not (site / "prf-prf.html").exists()
+
+
+def test_the_printable_course_has_every_chapter_its_figures_and_nothing_cut(site):
+    """scripts/build_pdf.py (run by the book build) printed the whole course with Chromium."""
+    import json
+
+    pypdf = pytest.importorskip("pypdf")
+    pdf = site / "balancelab-course.pdf"
+    assert pdf.is_file(), "no printable course: scripts/build_pdf.py did not run"
+    report = json.loads((site / "balancelab-course.json").read_text())
+    assert report["cut"] == [], report["cut"][:10]
+    assert [c["page"] for c in report["chapters"]] == CHAPTERS
+    reader = pypdf.PdfReader(str(pdf))
+    text = " ".join(" ".join((page.extract_text() or "").split()) for page in reader.pages)
+    images = sum(len(page.images) for page in reader.pages)
+    def titles(items):
+        for item in items:
+            yield from titles(item) if isinstance(item, list) else [" ".join(item.title.split())]
+
+    outline = list(titles(reader.outline))   # the PDF's bookmarks: one per heading
+    for chapter in report["chapters"]:
+        title = re.sub(r"^\d+\.\s*", "", " ".join(chapter["title"].split()))   # the number may be a separate mark
+        assert title and any(title[:30] in t for t in outline), f"the PDF lacks the chapter {title!r}"
+    assert "Solutions" in outline
+    for name in ("ch1_counterweights", "ch5_fourbar", "ch8_ideal_to_real"):
+        shown = next(c for c in report["chapters"] if c["page"] == name)
+        assert shown["images"] >= 2, name
+        assert shown["solutions"] >= 1, f"{name}: no solutions at the chapter's end"
+    # every figure of the site's pages is in the PDF (an animation shows one frame)
+    assert images >= sum(c["images"] for c in report["chapters"]) * 0.9, (images, report["images"])
+    assert len(reader.pages) > 40
+
+
 def test_figures_keep_the_alt_text_their_page_wrote(site):
     for name in NOTEBOOKS:
         source = (ROOT / "book" / f"{name}.md").read_text()
@@ -313,6 +372,84 @@ async () => {
 """
 
 
+#: What a reader of every page must be able to see, evaluated after the page has loaded (every
+#: solution and dropdown opened first): each img, svg and formula inside the strip its scroll
+#: container lets the reader reach (the window when it has none); no TeX, $…$ or literal \\n in
+#: the text outside code and maths; every matplotlib figure checked for clashing texts when it was
+#: made (balancelab.viz.style.text_clashes) and clean; unique element ids.
+READER_CHECKS = """
+async () => {
+  // open every solution and dropdown first: what is cut inside them is cut for the reader too
+  document.querySelectorAll(".toggle-hidden").forEach(e => e.classList.remove("toggle-hidden"));
+  document.querySelectorAll("details").forEach(d => { d.open = true; });
+  if (window.MathJax && MathJax.startup && MathJax.startup.promise) { await MathJax.startup.promise; }
+  await new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)));
+  const main = document.querySelector("main") || document.body;
+  const vw = document.documentElement.clientWidth;
+  const label = e => {
+    if (e.tagName === "IMG") return "img " + (e.alt || "").slice(0, 50);
+    if (e.tagName === "MJX-CONTAINER") return "formula " + (e.closest(".math, span, div") || e).textContent.slice(0, 50);
+    return e.tagName.toLowerCase() + " " + (e.getAttribute("aria-label") || e.textContent || "").slice(0, 40);
+  };
+  // every img, svg and formula lies where its scroll container lets the reader reach it
+  const cut = [];
+  const items = Array.from(main.querySelectorAll("img, svg, mjx-container"))
+    .filter(e => !(e.tagName === "svg" && (e.closest("mjx-container, button, .anim-buttons") || e.getBoundingClientRect().width < 24)))
+    .filter(e => e.getClientRects().length && e.getBoundingClientRect().width > 0);
+  for (const e of items) {
+    const r = e.getBoundingClientRect();
+    // the reachable strip: clipped by every clipping ancestor up to the first scroll container,
+    // whose whole scrollable width is reachable; the window when there is none
+    let reach = {left: -Infinity, right: Infinity}, why = "the window", scroller = null;
+    for (let a = e.parentElement; a && a !== document.body && a !== document.documentElement; a = a.parentElement) {
+      const cs = getComputedStyle(a), ox = cs.overflowX;
+      if (ox === "visible" || cs.display === "inline" || cs.display === "contents") continue;   // not a box that clips
+      const ar = a.getBoundingClientRect();
+      const scrolls = (ox === "auto" || ox === "scroll");
+      const left = ar.left + a.clientLeft - a.scrollLeft;
+      const right = scrolls ? left + a.scrollWidth : ar.left + a.clientLeft + a.clientWidth;
+      if (left > reach.left || right < reach.right) why = a.tagName.toLowerCase() + "." + String(a.className).split(" ")[0];
+      reach = {left: Math.max(reach.left, left), right: Math.min(reach.right, right)};
+      if (scrolls) { scroller = a; break; }
+    }
+    if (!scroller) reach = {left: Math.max(reach.left, 0), right: Math.min(reach.right, vw)};
+    const lost = Math.max(reach.left - r.left, r.right - reach.right);
+    if (lost > 1.5) cut.push(`${label(e)}: ${lost.toFixed(0)} px out of reach of ${why}`);
+  }
+  // no TeX, $…$ or literal \\n in the text a reader sees (code and rendered maths aside)
+  const raw = [];
+  const walker = document.createTreeWalker(main, NodeFilter.SHOW_TEXT, {acceptNode: n =>
+    n.parentElement.closest("pre, code, script, style, mjx-container, .math, .highlight, .MathJax_Preview, .cell_input, textarea, mjx-assistive-mml")
+      ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT});
+  const tex = /\\\\(?:[a-zA-Z]{2,}|[()\\[\\]])|\\$[^$\\s][^$]*\\$|\\\\n\\b/;
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    const m = n.textContent.match(tex);
+    if (m) raw.push(n.textContent.trim().slice(Math.max(0, m.index - 30), m.index + 50));
+  }
+  // matplotlib text boxes (checked when the figure was made, see balancelab.viz.style.text_clashes)
+  const figures = Array.from(main.querySelectorAll(".bl-figure"));
+  const unchecked = figures.filter(f => !f.hasAttribute("data-texts-checked")).length;
+  const clashes = figures.filter(f => f.dataset.textClashes).map(f => f.dataset.textClashes.slice(0, 160));
+  // element ids are unique
+  const seen = {}, dup = [];
+  document.querySelectorAll("[id]").forEach(e => { if (seen[e.id]) dup.push(e.id); seen[e.id] = 1; });
+  return {cut, raw, unchecked, clashes, dup: [...new Set(dup)]};
+}
+"""
+
+
+def _reader_problems(page, where: str) -> list[str]:
+    res = page.evaluate(READER_CHECKS)
+    problems = [f"{where}: out of reach: {c}" for c in res["cut"]]
+    problems += [f"{where}: raw TeX or markup in the text: {r!r}" for r in res["raw"]]
+    if res["unchecked"]:
+        problems.append(f"{where}: {res['unchecked']} figures made without the house style's text check")
+    problems += [f"{where}: figure texts clash: {c}" for c in res["clashes"]]
+    if res["dup"]:
+        problems.append(f"{where}: duplicate element ids {res['dup'][:5]}")
+    return problems
+
+
 def _png_dpi(src: str, site: Path) -> float:
     """The dpi a PNG declares (72 when it declares none), from a data URI's start or a site file."""
     import base64
@@ -459,6 +596,7 @@ def test_every_page_in_a_browser(site, server, browser, width):
             if int(slider.get_attribute("max") or 0) < 2:
                 problems.append(f"{where}: animation {i} has fewer than 3 frames")
         page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True)
+        problems += _reader_problems(page, where)
         problems += [f"{where}: console error: {c}" for c in console]
         problems += [f"{where}: failed request: {b}" for b in bad]
         page.close()

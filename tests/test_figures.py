@@ -131,12 +131,15 @@ def test_a_row_of_panels_becomes_one_image_per_panel_at_the_house_resolution():
     html = style.figure_html(fig)
     images = _decode(html)
     assert len(images) == 3
-    for i, im in enumerate(images):
-        assert round(im.info["dpi"][0]) == style.DPI
-        # each panel is about a third of the figure, at the house resolution
-        assert 0.2 * 12 * style.DPI < im.size[0] < 0.4 * 12 * style.DPI
-        assert f'alt="Figure panel: panel {i}' in html
     widths = [int(w) for w in re.findall(r'\bwidth="(\d+)"', html)]
+    for i, im in enumerate(images):
+        # PIXEL_RATIO device pixels per CSS pixel: sharp on a high-density screen
+        assert style.PIXEL_RATIO >= 2
+        assert round(im.info["dpi"][0]) == style.DPI * style.PIXEL_RATIO
+        assert abs(im.size[0] - style.PIXEL_RATIO * widths[i]) <= style.PIXEL_RATIO
+        # each panel is about a third of the figure, shown at the house resolution
+        assert 0.2 * 12 * style.DPI < widths[i] < 0.4 * 12 * style.DPI
+        assert f'alt="Figure panel: panel {i}' in html
     mins = [float(m) for m in re.findall(r"min-width: (\d+)px", html)]
     assert mins == pytest.approx([style.MIN_SCALE * w for w in widths], abs=1)
     assert fig.dpi == 80   # the figure itself is left as it was
@@ -150,7 +153,7 @@ def test_a_figure_with_a_figure_title_or_one_panel_stays_whole():
     single = Figure(figsize=(5, 3), layout="constrained")
     single.subplots().plot([0, 1], [1, 0])
     (im,) = _decode(style.figure_html(single))
-    assert im.size[0] <= 5 * style.DPI
+    assert im.size[0] <= 5 * style.DPI * style.PIXEL_RATIO
 
 
 def test_a_colour_bar_stays_with_its_panel():
@@ -224,6 +227,56 @@ def test_coincident_points_share_one_label():
     assert set(dirs) == {"A", "C"}
     # the obstacle up and to the right of A pushes A's label elsewhere
     assert dirs["A"] != (1, 1)
+
+
+# ---------------------------------------------------------------- texts that clash
+def test_text_clashes_finds_overlapping_titles_and_text_outside_the_canvas():
+    fig = Figure(figsize=(4, 2))
+    a, b = fig.subplots(1, 2)
+    a.set_title("a long title that runs into the next panel's title")
+    b.set_title("the next panel's own long title")
+    a.set_xlabel("a label under the bottom edge")
+    found = style.text_clashes(fig)
+    assert any("×" in c and "next panel" in c for c in found), found
+    assert any("outside the canvas" in c for c in found), found
+    # the same figure with wrapped titles and a layout engine has none
+    good = Figure(figsize=(4, 2), layout="constrained")
+    a, b = good.subplots(1, 2)
+    style.fit_title(a, "a long title that runs into the next panel's title")
+    style.fit_title(b, "the next panel's own long title")
+    a.set_xlabel("a label")
+    assert style.text_clashes(good) == []
+
+
+def test_figure_html_records_the_check_and_fixes_a_label_below_the_canvas():
+    fig = Figure(figsize=(3, 2))   # no layout engine: the x-label falls off the bottom
+    ax = fig.subplots()
+    ax.plot([0, 1], [0, 1])
+    ax.set_xlabel("θ, angle of link 1 from the x-axis (deg)")
+    assert any("outside the canvas" in c for c in style.text_clashes(fig))
+    html = style.figure_html(fig)
+    assert re.search(r'data-texts-checked="\d+"', html) and "data-text-clashes" not in html
+    crowded = Figure(figsize=(3, 2), layout="constrained")
+    ax = crowded.subplots()
+    ax.text(0.5, 0.5, "one")
+    ax.text(0.5, 0.5, "two")
+    assert 'data-text-clashes="&#x27;one&#x27; × &#x27;two&#x27;"' in style.figure_html(crowded)
+
+
+@pytest.mark.parametrize("name", ["fourbar_two_springs", "deepak_technique2_A", "pulley_lever", "singh_fourbar"])
+def test_library_figures_have_no_clashing_texts(name):
+    """Titles wrap to their Axes, the verdict sits in the legend (never on a curve or under the
+    legend), and every text lies inside the canvas, for drawings, energy plots and animations."""
+    import matplotlib.pyplot as plt
+
+    style.use()
+    d = bl.catalog()[name]()
+    for fig in (bl.draw(d).figure, bl.energy_plot(d).figure):
+        assert style.text_clashes(fig) == [], name
+    anim = animate(d, frames=3)
+    anim.frame_image(0)
+    assert style.text_clashes(anim._fig, anim._fig.canvas.get_renderer()) == [], name
+    plt.close("all")
 
 
 # ---------------------------------------------------------------- every plot says which angle

@@ -230,3 +230,36 @@ def test_search_excerpts_quote_the_text_not_the_buttons(browser, server):
                 assert chrome not in text, f"{href}: the excerpt quotes the page's buttons: {text[:120]}"
     finally:
         ctx.close()
+
+
+def test_search_excerpts_read_as_text_without_tex_or_code(browser, server):
+    from playwright.sync_api import expect
+
+    ctx = browser.new_context(viewport={"width": 1280, "height": 800})
+    try:
+        page = ctx.new_page()
+        page.set_default_timeout(TIMEOUT_MS)
+        page.goto(server + "search.html?q=theta", wait_until="load")
+        expect(page.locator("#search-results p.search-summary")).to_contain_text("finished")
+        page.wait_for_function(
+            "() => { const li = [...document.querySelectorAll('#search-results li')];"
+            " return li.length > 0 && li.every(x => x.querySelector('p.context')); }")
+        texts = page.locator("#search-results li p.context").all_text_contents()
+        assert texts, "no search results for 'theta'"
+        for text in texts:
+            assert not re.search(r"\\[a-zA-Z]{2,}|\\[()\[\]]|\$", text), f"TeX in an excerpt: {text[:160]}"
+            assert "import balancelab" not in text and "bl.catalog()" not in text, f"code in an excerpt: {text[:160]}"
+    finally:
+        ctx.close()
+
+
+def test_clicking_a_solution_title_opens_it_without_an_error(open_page):
+    from playwright.sync_api import expect
+
+    page = open_page(1280)
+    solution = page.locator("div.solution.dropdown").first
+    body = solution.locator("section, div.solution-content, .admonition-title ~ *").first
+    expect(body).to_be_hidden()
+    solution.locator(".admonition-title a").first.click()
+    expect(body).to_be_visible()
+    assert page.url.endswith(START), f"the click left the page: {page.url}"

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.kinematics import body_to_world
-from .style import FONT, arrange_labels
+from .style import FONT, arrange_labels, fit_title
 from .frame import STYLE, as_config, check_design, new_axes, range_grid, tex_label
 from .springs import (cable_angle, cable_coil_end, profile_outline, pulley_coil_length, pulley_drawn_radius,
                       spring_path, spring_style)
@@ -569,6 +569,6 @@ def draw(design: Design, q=None, ax=None, labels: bool = True, *, color: str | N
     drawing = Drawing(design, q, ax, labels=labels, color=color, limits=limits, alpha=alpha)
     ax = drawing.ax
     if title:
-        ax.set_title(design.name if title is True else str(title), fontsize=FONT["title"])
+        fit_title(ax, design.name if title is True else str(title), fontsize=FONT["title"])
     ax.drawing = drawing
     return ax

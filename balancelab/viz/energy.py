@@ -16,7 +16,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.validation import finite_real
-from .style import FONT
+from .style import FONT, fit_title
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
 
 __all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
@@ -225,6 +225,9 @@ class EnergyView:
         #: fixed energy-axis limits (J) for one dof; ``None`` to fit each design
         self.ylim: tuple | None = None
         self.lines: dict = {}
+        #: the legend (1 dof, when asked for); it also carries the verdict, which then never
+        #: covers a curve or the legend
+        self.legend = None
         self.image = None
         self.residual_image = None
         if design.dof != 2:
@@ -254,7 +257,8 @@ class EnergyView:
                       else angle_label(design, 0))
         ax.set_ylabel("potential energy (J)")
         if legend:
-            ax.legend(loc="best", fontsize=FONT["legend"], framealpha=0.85)
+            self.legend = ax.legend(loc="best", fontsize=FONT["legend"], framealpha=0.85,
+                                    title_fontsize=FONT["note"], alignment="left")
 
     def _init_map(self, design: Design, residual_ax) -> None:
         ax = self.ax
@@ -358,25 +362,29 @@ class EnergyView:
     def _show_verdict(self) -> None:
         d, rep = self.design, self.report
         if rep is None:
-            self.note.set_text("nothing stores energy as this design moves")
+            verdict = "nothing stores energy as this design moves"
             self.worst.set_data([], [])
         elif rep.balanced:
-            self.note.set_text(f"balanced: total constant to {rep.variation:.1e}\n"
-                               f"of the energy scale ({rep.scale:.3g} J)")
+            verdict = (f"balanced: total constant to {rep.variation:.1e}\n"
+                       f"of the energy scale ({rep.scale:.3g} J)")
             self.worst.set_data([], [])
         else:
             wq = np.atleast_1d(rep.worst_q)
-            self.note.set_text(f"not balanced: total varies by {rep.variation:.2g} of the scale\n"
-                               f"largest |dV/dq| = {rep.residual * rep.scale:.3g} J/rad (×)")
+            verdict = (f"not balanced: total varies by {rep.variation:.2g} of the scale\n"
+                       f"largest |dV/dq| = {rep.residual * rep.scale:.3g} J/rad (×)")
             if self.path:  # the worst configuration need not lie on the path: it is written, not marked
                 self.worst.set_data([], [])
             elif d.dof == 1:
                 self.worst.set_data([np.degrees(wq[0])], [float(d.potential_energy(wq).total)])
             else:
                 self.worst.set_data([np.degrees(wq[0])], [np.degrees(wq[1])])
+        self.note.set_text(verdict)   # shown in the legend's title when there is a legend
+        if self.legend is not None:
+            self.legend.set_title(verdict)
+            self.note.set_visible(False)
         if self.show_title:
-            self.ax.set_title(f"{d.name}: " + ("balanced" if rep is not None and rep.balanced else
-                                               "not balanced"), fontsize=FONT["title"])
+            fit_title(self.ax, f"{d.name}: " + ("balanced" if rep is not None and rep.balanced else
+                                                "not balanced"), fontsize=FONT["title"])
 
     @property
     def description(self) -> str:
@@ -394,12 +402,15 @@ class EnergyView:
     def artists(self) -> list:
         """The artists that change with the design or the configuration."""
         arts = list(self.lines.values()) + [self.marker, self.worst, self.note]
+        arts += [self.legend] if self.legend is not None else []
         return arts + [a for a in (self.image, self.residual_image) if a is not None]
 
     def set_visible(self, visible: bool) -> None:
         """Show or hide the curves, map, markers and note."""
         for a in self.artists:
             a.set_visible(visible)
+        if self.legend is not None:   # the verdict is in the legend's title
+            self.note.set_visible(False)
 
     def set_q(self, q) -> None:
         """Move the marker to configuration ``q`` (rad)."""

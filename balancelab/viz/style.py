@@ -8,7 +8,12 @@ A figure is read on a 1280 px screen and on a 390 px phone. A PNG of width ``w``
 * a figure is never shown smaller than :data:`MIN_SCALE` of its natural width (it scrolls
   sideways instead), so the smallest text stays >= :data:`MIN_FONT_PX` CSS px at any width;
 * a figure of several panels side by side is shown as one image per panel
-  (:func:`figure_html`), which sit side by side on a wide screen and stack on a phone.
+  (:func:`figure_html`), which sit side by side on a wide screen and stack on a phone;
+* each image has :data:`PIXEL_RATIO` device pixels per CSS pixel (sharp on a phone's or a
+  laptop's high-density screen) and is stored as a palette PNG (line art: a few kB per panel);
+* no two texts of a figure overlap and every text lies inside the canvas
+  (:func:`text_clashes`; :func:`figure_html` records what it found on the page, where the
+  browser test reads it).
 
 :func:`use` applies the style to matplotlib; :func:`install` makes an IPython shell show every
 figure with :func:`figure_html` (the book's kernels do this at start-up, see
@@ -26,11 +31,14 @@ import textwrap
 
 import numpy as np
 
-__all__ = ["DPI", "FONT", "MIN_FONT_PT", "MIN_FONT_PX", "MIN_SCALE", "RC", "arrange_labels", "figure_html",
-           "fit_title", "install", "panel_columns", "use"]
+__all__ = ["DPI", "FONT", "MIN_FONT_PT", "MIN_FONT_PX", "MIN_SCALE", "PIXEL_RATIO", "RC", "arrange_labels",
+           "figure_html", "fit_title", "install", "panel_columns", "text_clashes", "use"]
 
 #: Resolution (dots per inch) of every figure and animation frame of the course.
 DPI = 120
+#: Device pixels per CSS pixel of a page's figure: the PNG is drawn at ``DPI * PIXEL_RATIO`` and
+#: shown at the size it would have at ``DPI``.
+PIXEL_RATIO = 2
 #: The smallest font of any text in a figure (points).
 MIN_FONT_PT = 9.0
 #: The smallest rendered font the site allows (CSS px).
@@ -252,12 +260,103 @@ def panel_columns(fig, renderer=None) -> list[tuple[float, float]]:
 
 
 def _png(rgba: np.ndarray, dpi: float) -> bytes:
+    """A PNG of ``rgba``: a 256-colour palette when that is smaller (line art), else RGB."""
     from PIL import Image
 
     im = Image.fromarray(np.ascontiguousarray(rgba[..., :3]))
-    out = io.BytesIO()
-    im.save(out, format="png", dpi=(dpi, dpi), optimize=True)
-    return out.getvalue()
+    best = b""
+    for candidate in (im.quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE), im):
+        out = io.BytesIO()
+        candidate.save(out, format="png", dpi=(dpi, dpi), optimize=True)
+        if not best or len(out.getvalue()) < len(best):
+            best = out.getvalue()
+    return best
+
+
+def _figure_texts(fig, renderer) -> list:
+    """(name, bbox) of every text the reader sees: titles, axis labels, tick labels in view,
+    annotations, figure texts; a legend counts as one box."""
+    from matplotlib.text import Text
+
+    found = []
+
+    def add(t, name=None):
+        if isinstance(t, Text) and t.get_visible() and t.get_text().strip():
+            found.append((name or t.get_text().strip(), t.get_window_extent(renderer)))
+
+    for t in fig.texts:
+        add(t)
+    sup = getattr(fig, "_suptitle", None)
+    if sup is not None:
+        add(sup)
+    for ax in fig.axes:
+        if not ax.get_visible():
+            continue
+        for t in (ax.title, ax._left_title, ax._right_title, ax.xaxis.label, ax.yaxis.label):
+            add(t)
+        for axis, lo_hi in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+            lo, hi = min(lo_hi), max(lo_hi)
+            span = (hi - lo) or 1.0
+            for tick in axis.get_major_ticks():
+                if lo - 1e-9 * span <= tick.get_loc() <= hi + 1e-9 * span:
+                    add(tick.label1)
+                    add(tick.label2)
+        for t in ax.texts:
+            add(t)
+        legend = ax.get_legend()
+        if legend is not None and legend.get_visible():
+            found.append(("legend", legend.get_window_extent(renderer)))
+    for legend in fig.legends:
+        found.append(("legend", legend.get_window_extent(renderer)))
+    return found
+
+
+def text_clashes(fig, renderer=None, tolerance: float = 1.0) -> list[str]:
+    """Texts of a drawn figure that overlap another text or stick out of the canvas.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    renderer : optional
+        The renderer of the figure's last draw (the figure is drawn with Agg when not given).
+    tolerance : float
+        Pixels of overlap (in both directions) or of overhang forgiven.
+
+    Returns
+    -------
+    list of str
+        One line per problem ("'A' × 'B'", "'label' outside the canvas"); empty when none.
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> fig = Figure(figsize=(3, 2), layout="constrained"); ax = fig.subplots()
+    >>> _ = ax.set_xlabel("time (s)"); text_clashes(fig)
+    []
+    >>> _ = ax.text(0.5, 0.5, "one"); _ = ax.text(0.5, 0.5, "two"); text_clashes(fig)
+    ["'one' × 'two'"]
+    """
+    if renderer is None:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        old = fig.canvas
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        renderer = canvas.get_renderer()
+        fig.set_canvas(old)
+    texts = _figure_texts(fig, renderer)
+    width, height = fig.bbox.width, fig.bbox.height
+    problems = []
+    for name, box in texts:
+        if box.x0 < -tolerance or box.y0 < -tolerance or box.x1 > width + tolerance or box.y1 > height + tolerance:
+            problems.append(f"{name!r} outside the canvas")
+    for i, (a, ba) in enumerate(texts):
+        for b, bb in texts[i + 1:]:
+            w = min(ba.x1, bb.x1) - max(ba.x0, bb.x0)
+            h = min(ba.y1, bb.y1) - max(ba.y0, bb.y0)
+            if w > tolerance and h > tolerance:
+                problems.append(f"{a!r} × {b!r}")
+    return problems
 
 
 def _crop(rgba: np.ndarray, background) -> np.ndarray:
@@ -290,6 +389,11 @@ def _alt(fig, axes) -> str:
 def figure_html(fig, dpi: float = DPI) -> str:
     """The figure as HTML: one PNG per column of panels (:func:`panel_columns`), at ``dpi``.
 
+    Each PNG has :data:`PIXEL_RATIO` times the pixels of its shown size (sharp on high-density
+    screens). A figure without a layout engine whose texts stick out of the canvas is laid out
+    with ``tight_layout`` first. The ``<div>`` records :func:`text_clashes`: its
+    ``data-texts-checked`` counts the texts checked, ``data-text-clashes`` lists the problems.
+
     The images sit side by side while the page is wide enough to show each at
     :data:`MIN_SCALE` of its natural width or more, and stack otherwise; an image wider than
     the page then scrolls sideways instead of shrinking. Each image carries alt text made of
@@ -311,18 +415,29 @@ def figure_html(fig, dpi: float = DPI) -> str:
     >>> fig = Figure(figsize=(6, 2), layout="constrained")
     >>> a, b = fig.subplots(1, 2); _ = a.set_title("energy"); _ = b.set_title("torque")
     >>> page = figure_html(fig)
-    >>> page.count("<img"), 'alt="Figure panel: energy"' in page
-    (2, True)
+    >>> page.count("<img"), 'alt="Figure panel: energy"' in page, 'data-text-clashes' in page
+    (2, True, False)
     """
+    import warnings
+
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     old_dpi, old_canvas = fig.dpi, fig.canvas
     canvas = FigureCanvasAgg(fig)
     try:
-        fig.set_dpi(dpi)
+        fig.set_dpi(dpi * PIXEL_RATIO)
         canvas.draw()
+        renderer = canvas.get_renderer()
+        clashes = text_clashes(fig, renderer)
+        if fig.get_layout_engine() is None and any("outside the canvas" in c for c in clashes):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                fig.tight_layout()
+            canvas.draw()
+            clashes = text_clashes(fig, renderer)
+        checked = len(_figure_texts(fig, renderer))
         rgba = np.asarray(canvas.buffer_rgba()).copy()
-        columns = panel_columns(fig, canvas.get_renderer())
+        columns = panel_columns(fig, renderer)
         groups = [[ax for ax in fig.axes if x0 <= 0.5 * (ax.bbox.x0 + ax.bbox.x1) < x1] for x0, x1 in columns]
     finally:
         fig.set_dpi(old_dpi)
@@ -331,13 +446,14 @@ def figure_html(fig, dpi: float = DPI) -> str:
     imgs = []
     for (x0, x1), axes in zip(columns, groups):
         part = _crop(rgba[:, int(round(x0)):int(round(x1))], background)
-        data = base64.b64encode(_png(part, dpi)).decode("ascii")
-        w, h = part.shape[1], part.shape[0]
-        imgs.append(f'<img src="data:image/png;base64,{data}" width="{w}" height="{h}" '
+        data = base64.b64encode(_png(part, dpi * PIXEL_RATIO)).decode("ascii")
+        w, h = part.shape[1] / PIXEL_RATIO, part.shape[0] / PIXEL_RATIO
+        imgs.append(f'<img src="data:image/png;base64,{data}" width="{w:.0f}" height="{h:.0f}" '
                     f'alt="{html.escape(_alt(fig, axes))}" class="bl-panel" '
                     f'style="flex: 1 1 {MIN_SCALE * w:.0f}px; min-width: {MIN_SCALE * w:.0f}px; '
-                    f'max-width: {w}px; height: auto;">')
-    return '<div class="bl-figure">' + "".join(imgs) + "</div>"
+                    f'max-width: {w:.0f}px; height: auto;">')
+    found = f' data-text-clashes="{html.escape("; ".join(clashes))}"' if clashes else ""
+    return f'<div class="bl-figure" data-texts-checked="{checked}"{found}>' + "".join(imgs) + "</div>"
 
 
 def install(shell=None) -> bool:

@@ -9,6 +9,9 @@ the page's MyST source (:func:`reader_notebook`):
   ``solution`` blocks) are left out: the site keeps them behind a click;
 * directives become Markdown Jupyter understands (a bold heading and a quotation), roles become
   their text (``{cite:p}`lecture35``` -> ``[lecture35]``), labels of targets and equations go;
+  a cross-reference becomes what the site shows ("(4.3)", "Figure 4.1", the section's title),
+  never the raw label;
+* the first cell names the course (``html_title``; Jupyter Book 1 never sets ``project``);
 * outputs are left out (the notebook is for running): the file is a few kB, not a few MB.
 """
 from __future__ import annotations
@@ -30,7 +33,13 @@ _TITLES = {"exercise": "Exercise", "prf:theorem": "Theorem", "prf:proof": "Proof
 _CITE = ("cite", "cite:p", "cite:t", "cite:ps", "cite:ts", "cite:alp")
 
 
-def _role(m: re.Match) -> str:
+#: What a cross-reference names when the site's number or title is not known, by label prefix.
+_KINDS = {"fig": "the figure", "tab": "the table", "thm": "the theorem", "eq": "the equation",
+          "ex": "the exercise", "sol": "the solution", "notes": "the notes on the sources",
+          "lem": "the lemma", "def": "the definition"}
+
+
+def _role(m: re.Match, resolve=None) -> str:
     role, text = m.group("role"), m.group("text")
     shown = re.match(r"^(.*?)\s*<([^>]*)>$", text, re.S)
     if shown and shown.group(1):
@@ -38,13 +47,14 @@ def _role(m: re.Match) -> str:
     target = shown.group(2) if shown else text
     if role in _CITE:
         return "[" + ", ".join(k.strip() for k in target.split(",")) + "]"
-    if role == "eq":
-        return f"({target})"
-    if role in ("numref", "ref", "prf:ref"):
-        return "the " + {"fig": "figure", "tab": "table", "thm": "theorem", "eq": "equation"}.get(
-            target.split("-")[0], "section") + f" `{target}` on the course site"
+    if role in ("eq", "numref", "ref", "prf:ref"):
+        found = resolve(role, target) if resolve is not None else None
+        if found:
+            return found
+        return _KINDS.get(target.split("-")[0], "the section") + " on the course site"
     if role == "doc":
-        return f"the page *{target.split('/')[-1].replace('_', ' ')}*"
+        found = resolve(role, target) if resolve is not None else None
+        return f"*{found}*" if found else f"the page *{target.split('/')[-1].replace('_', ' ')}*"
     if role == "math":
         return f"${target}$"
     return target
@@ -68,14 +78,14 @@ def _directive(m: re.Match) -> str:
     return (f"> **{title}**\n>\n" if title else "") + quoted + "\n"
 
 
-def _markdown(text: str) -> str:
+def _markdown(text: str, resolve=None) -> str:
     text = _FENCE.sub(_directive, text)
     text = _TARGET.sub("", text)
     text = _EQ_LABEL.sub(r"\1", text)
-    return _ROLE.sub(_role, text).strip()
+    return _ROLE.sub(lambda m: _role(m, resolve), text).strip()
 
 
-def reader_notebook(myst: str, title: str = ""):
+def reader_notebook(myst: str, title: str = "", resolve=None):
     """A MyST notebook page as a plain Jupyter notebook without solutions or outputs.
 
     Parameters
@@ -84,6 +94,10 @@ def reader_notebook(myst: str, title: str = ""):
         The page's MyST Markdown (jupytext ``md:myst``).
     title : str
         Where the notebook comes from, for its first cell.
+    resolve : callable, optional
+        ``resolve(role, label)``: what the site shows for a cross-reference ("(4.3)",
+        "Figure 4.1", a section's title), or None; without it a reference reads "the figure on
+        the course site".
 
     Returns
     -------
@@ -102,6 +116,11 @@ def reader_notebook(myst: str, title: str = ""):
     ({'markdown'}, False, False, True)
     >>> "> **Exercise — Try**" in text and "End." in text and "{" not in text
     True
+    >>> cells = reader_notebook("# P\\n\\nSee {eq}`eq-a` and {numref}`fig-b`.\\n",
+    ...                         resolve=lambda role, label: "(1.2)" if role == "eq" else None).cells
+    >>> cells[0].source
+    '# P\\n\\nSee (1.2) and the figure on the course site.'
+
     """
     import jupytext
     import nbformat
@@ -122,7 +141,7 @@ def reader_notebook(myst: str, title: str = ""):
                 end = text.find("```", at + len(marker))
                 text = text[end + 3:] if end >= 0 else ""
                 hiding = not hiding
-            source = _markdown("".join(kept))
+            source = _markdown("".join(kept), resolve)
             if source:
                 cells.append(nbformat.v4.new_markdown_cell(source))
         elif not hiding:
@@ -153,8 +172,57 @@ def _rewrite(app, exception) -> None:
         src = Path(app.srcdir) / f"{docname}.md"
         if not src.is_file():
             continue
-        title = f"{app.config.project}: {app.env.titles[docname].astext()}" if docname in app.env.titles else ""
-        nbformat.write(reader_notebook(src.read_text(encoding="utf-8"), title), str(ipynb))
+        title = f"{course_title(app)}: {app.env.titles[docname].astext()}" if docname in app.env.titles else ""
+        nbformat.write(reader_notebook(src.read_text(encoding="utf-8"), title, resolver(app)), str(ipynb))
+
+
+def course_title(app) -> str:
+    """The course's name: ``html_title`` (``_config.yml``'s ``title``; Jupyter Book 1 leaves
+    ``project`` at "Project name not set")."""
+    title = (app.config.html_title or "").strip()
+    if not title or title.lower().startswith("project name not set"):
+        title = app.config.project or "The course"
+    return title
+
+
+def resolver(app):
+    """``resolve(role, label)`` for :func:`reader_notebook`: the equation number, figure number or
+    section title that the site shows for a cross-reference, from the Sphinx environment."""
+    env = app.env
+    std = env.get_domain("std")
+
+    def number(docname, kind, node_id):
+        nums = env.toc_fignumbers.get(docname, {}).get(kind, {}).get(node_id)
+        return ".".join(map(str, nums)) if nums else None
+
+    def resolve(role, label):
+        if role == "doc":
+            for docname, title in env.titles.items():
+                if docname == label.lstrip("/") or docname.endswith("/" + label):
+                    return title.astext()
+            return None
+        if role == "eq":
+            math = env.get_domain("math")
+            found = math.equations.get(label) if hasattr(math, "equations") else None
+            if not found:
+                return None
+            docname, eqno = found
+            num = number(docname, "displaymath", f"equation-{label}")
+            return f"({num or eqno})"
+        target = std.labels.get(label) or std.anonlabels.get(label)
+        if not target:
+            return None
+        docname, node_id = target[0], target[1]
+        if label.startswith("fig"):
+            num = number(docname, "figure", node_id)
+            return f"Figure {num}" if num else None
+        if label.startswith("tab"):
+            num = number(docname, "table", node_id)
+            return f"Table {num}" if num else None
+        name = target[2] if len(target) > 2 else ""
+        return f"*{name}*" if name else None
+
+    return resolve
 
 
 def setup(app):

@@ -1,0 +1,214 @@
+"""Print the built course into one PDF, offline, with Debian's Chromium (no TeX).
+
+Usage::
+
+    python scripts/build_pdf.py        # after scripts/build_book.py; writes _build/html/balancelab-course.pdf
+
+Every page of ``_toc.yml`` is taken, in order, from the built site (``_build/html``): its
+article, with its numbered equations and figures, MathJax rendered by the browser. The pages
+are put one after the other on a single temporary page that uses the site's own style sheets
+plus :data:`PRINT_CSS`; each chapter starts on a new sheet, the solutions of a chapter's
+exercises are moved to a "Solutions" section at its end, animations show their first frame,
+and nothing is cut at a page edge (a figure or formula wider than the text is scaled down, a
+figure never breaks across sheets). Chromium's ``page.pdf()`` prints it. The check of what
+was printed (:func:`layout_report`) is saved next to the PDF as ``balancelab-course.json``
+(the tests read it).
+"""
+from __future__ import annotations
+
+import functools
+import http.server
+import json
+import re
+import shutil
+import sys
+import threading
+import time
+from pathlib import Path
+
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+SITE = ROOT / "_build" / "html"
+PDF_NAME = "balancelab-course.pdf"
+REPORT_NAME = "balancelab-course.json"
+TEMP_PAGE = "book/_print_course.html"
+
+PRINT_CSS = """
+@page { size: A4; margin: 16mm 14mm 18mm 14mm; }
+html, body { background: #fff !important; }
+.bd-header, .bd-sidebar-primary, .bd-sidebar-secondary, .bd-header-article, .prev-next-area,
+.bd-footer, .bd-footer-article, .bd-footer-content, .header-article-items, .anim-buttons,
+.anim-controls, .anim-state, div.animation input, div.animation form, .toggle-button,
+.copybtn, .headerlink, #pst-back-to-top, .search-button-field, .skip-link,
+.onlyprint, .bl-launch { display: none !important; }
+.bd-main .bd-content .bd-article-container { max-width: none !important; padding: 0 !important; }
+.bd-page-width { max-width: none !important; }
+section.bl-chapter { break-before: page; }
+section.bl-chapter h1, .bl-title-page h1 { display: block !important; visibility: visible !important; }
+section.bl-chapter:first-of-type { break-before: auto; }
+img, figure, .bl-figure, div.animation, mjx-container[display="true"], table, pre,
+.admonition-title, h1, h2, h3, h4 { break-inside: avoid; }
+h1, h2, h3, h4, .admonition-title { break-after: avoid; }
+.bl-figure { overflow: visible !important; flex-wrap: wrap; }
+img { max-width: 100% !important; height: auto !important; min-width: 0 !important; }
+.bl-figure img.bl-panel { min-width: 0 !important; flex: 0 1 auto !important; }
+pre { white-space: pre-wrap !important; overflow-wrap: anywhere; overflow: visible !important; }
+mjx-container[display="true"], span.math, div.math { overflow: visible !important; }
+.toggle-hidden { display: block !important; visibility: visible !important; opacity: 1 !important; }
+.bl-title-page { text-align: center; padding-top: 30%; break-after: page; }
+.bl-title-page h1 { font-size: 2.2rem; }
+"""
+
+PREPARE_JS = """
+async () => {
+  document.querySelectorAll(".toggle-hidden").forEach(e => e.classList.remove("toggle-hidden"));
+  document.querySelectorAll("details").forEach(d => { d.open = true; });
+  // each chapter's solutions go to a "Solutions" section at its end
+  for (const chapter of document.querySelectorAll("section.bl-chapter")) {
+    const sols = Array.from(chapter.querySelectorAll("div.solution"));
+    if (!sols.length) continue;
+    const part = document.createElement("section");
+    part.className = "bl-solutions";
+    const h = document.createElement("h2");
+    h.textContent = "Solutions";
+    part.appendChild(h);
+    sols.forEach(s => part.appendChild(s));
+    chapter.appendChild(part);
+  }
+  if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+    await MathJax.startup.promise;
+    if (MathJax.typesetPromise) { await MathJax.typesetPromise(); }
+  }
+  await Promise.all(Array.from(document.images).map(i => i.complete ? null :
+    new Promise(r => { i.onload = i.onerror = r; })));
+}
+"""
+
+#: In print layout: what is wider than the text is scaled down to fit; then report what is still
+#: cut, how many images there are, and the chapters' titles.
+FIT_AND_REPORT_JS = """
+() => {
+  const main = document.querySelector("main") || document.body;
+  const width = main.getBoundingClientRect().width;
+  const left = main.getBoundingClientRect().left, right = left + width;
+  for (const e of document.querySelectorAll('mjx-container, table')) {
+    const r = e.getBoundingClientRect(), w = Math.max(e.scrollWidth, r.width);
+    if (r.left + w > right) { e.style.zoom = ((right - r.left) / w).toFixed(3); }
+  }
+  const cut = [];
+  for (const e of document.querySelectorAll('img, mjx-container, pre, table')) {
+    const r = e.getBoundingClientRect();
+    if (!r.width) continue;
+    if (r.left < left - 1 || r.right > right + 1) {
+      cut.push((e.alt || e.textContent || e.tagName).slice(0, 60) + ` (${Math.round(r.left)}..${Math.round(r.right)} of ${Math.round(left)}..${Math.round(right)})`);
+    }
+  }
+  const chapters = Array.from(document.querySelectorAll("section.bl-chapter")).map(s => {
+    const h = s.querySelector("h1");
+    return {page: s.dataset.page, title: h ? h.textContent.replace(/#$/, "").trim() : "",
+            images: s.querySelectorAll("img").length,
+            solutions: s.querySelectorAll(".bl-solutions div.solution").length};
+  });
+  return {cut, chapters, images: document.images.length, width};
+}
+"""
+
+
+def toc_pages() -> list[str]:
+    """The pages of ``_toc.yml`` in reading order (``book/intro`` ...)."""
+    toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
+    pages = [toc["root"]]
+    for part in toc.get("parts", []):
+        pages += [c["file"] for c in part.get("chapters", [])]
+    return pages
+
+
+def _article(html: str) -> str:
+    start = html.index('<article class="bd-article"')
+    start = html.index(">", start) + 1
+    return html[start:html.rindex("</article>")]
+
+
+def combined_page(site: Path = SITE) -> str:
+    """One HTML page holding every chapter's article, with the site's head and the print CSS."""
+    first = (site / "book" / "intro.html").read_text(encoding="utf-8")
+    head = first[:first.index("</head>")]
+    head = re.sub(r"<title>.*?</title>", "<title>Static balancing of linkages (printable course)</title>", head,
+                  flags=re.S)
+    body = ['<div class="bl-title-page"><h1>Static balancing of linkages</h1>'
+            '<p>The balancelab course: chapters, figures, exercises and their solutions.</p>'
+            f'<p>Printed {time.strftime("%Y-%m-%d")}</p></div>']
+    for page in toc_pages():
+        name = page.split("/")[-1]
+        html = (site / "book" / f"{name}.html").read_text(encoding="utf-8")
+        body.append(f'<section class="bl-chapter" data-page="{name}">{_article(html)}</section>')
+    return (head + f"<style>{PRINT_CSS}</style></head>\n<body><main class=\"bd-main\"><div class=\"bd-content\">"
+            "<div class=\"bd-article-container\"><article class=\"bd-article\">" + "\n".join(body)
+            + "</article></div></div></main></body></html>")
+
+
+class _Quiet(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+def build_pdf(site: Path = SITE) -> dict:
+    """Print the course into ``site / PDF_NAME``; return the layout report (also saved as JSON).
+
+    Raises
+    ------
+    SystemExit
+        When Chromium or playwright is missing, or when something is cut at a page edge.
+    """
+    chromium = shutil.which("chromium")
+    if chromium is None:
+        raise SystemExit("the printable course needs Debian's chromium (bash scripts/setup_extras.sh)")
+    from playwright.sync_api import sync_playwright
+
+    t0 = time.perf_counter()
+    temp = site / TEMP_PAGE
+    temp.write_text(combined_page(site), encoding="utf-8")
+    handler = functools.partial(_Quiet, directory=str(site))
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=httpd.serve_forever, daemon=True).start()
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=chromium,
+                                        args=["--headless", "--no-sandbox", "--disable-gpu"])
+            page = browser.new_page(viewport={"width": 800, "height": 1100})
+            page.set_default_timeout(180_000)
+            page.route("**/*", lambda r: r.continue_() if r.request.url.startswith(
+                ("data:", "blob:", "http://127.0.0.1")) else r.abort())
+            page.goto(f"http://127.0.0.1:{httpd.server_address[1]}/{TEMP_PAGE}", wait_until="load")
+            page.evaluate(PREPARE_JS)
+            page.emulate_media(media="print")
+            report = page.evaluate(FIT_AND_REPORT_JS)
+            page.pdf(path=str(site / PDF_NAME), format="A4", print_background=True, prefer_css_page_size=True,
+                     outline=True, tagged=True,
+                     display_header_footer=True, header_template="<span></span>",
+                     footer_template='<div style="font-size:8px;width:100%;text-align:center;">'
+                                     '<span class="pageNumber"></span> / <span class="totalPages"></span></div>')
+            browser.close()
+    finally:
+        httpd.shutdown()
+        httpd.server_close()
+        temp.unlink(missing_ok=True)
+    report["seconds"] = round(time.perf_counter() - t0, 1)
+    (site / REPORT_NAME).write_text(json.dumps(report, indent=1), encoding="utf-8")
+    if report["cut"]:
+        raise SystemExit("the printable course cuts content at the page edge:\n" + "\n".join(report["cut"][:20]))
+    return report
+
+
+def main() -> int:
+    if not (SITE / "book" / "intro.html").is_file():
+        raise SystemExit("build the site first: python scripts/build_book.py")
+    r = build_pdf()
+    print(f"printable course: {SITE / PDF_NAME} ({len(r['chapters'])} pages of the site, {r['images']} images, "
+          f"{r['seconds']} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
