@@ -8,6 +8,7 @@ numpy, scipy, sympy, matplotlib and the Jupyter stack from pip's cache (pinned b
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import io
 import json
 import os
@@ -81,10 +82,34 @@ def test_a_forks_notebooks_install_the_fork(tmp_path):
     ("github.com/o/r", "main"), ("https://github.com/o/r", ""), ("https://github.com/o/r", "a b"),
     ('https://github.com/o/r"; import os; "', "main"), ("https://github.com/o/r", 'x"'), (None, "main"),
     ("https://github.com/o/r", "main@evil"),
+    ("https://github.com/me/fork/tree/dev", "main"), ("ssh://git@github.com/me/fork", "main"),
+    ("git@github.com:me/fork.git", "main"), ("https://gitlab.com/me/fork/-/tree/dev", "main"),
+    ("http://github.com/o/r", "main"), ("https://github.com/me", "main"), ("https://github.com/o/r?x=1", "main"),
 ])
 def test_unusable_repository_addresses_are_refused(url, branch):
     with pytest.raises(ValueError, match=r"repository\.(url|branch)"):
         launch.setup_source(url, branch)
+
+
+@pytest.mark.parametrize("url", ["https://github.com/me/fork/tree/dev", "ssh://git@github.com/me/fork"])
+def test_a_repository_page_or_ssh_address_is_refused_naming_the_accepted_form(url, tmp_path):
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    cfg["repository"]["url"] = url
+    (tmp_path / "_config.yml").write_text(yaml.safe_dump(cfg))
+    with pytest.raises(ValueError, match=r"repository\.url must be .*https://host/owner/repo"):
+        launch.course_repository(tmp_path / "_config.yml")
+
+
+def test_a_clone_address_ending_in_git_gives_web_links_without_it(tmp_path):
+    nb = "labs/student/lab1_counterweights.ipynb"
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    for url, source in [("https://github.com/me/fork.git", f"https://github.com/me/fork/blob/dev/{nb}"),
+                        ("https://gitlab.com/t/sub/fork.git", f"https://gitlab.com/t/sub/fork/-/blob/dev/{nb}")]:
+        cfg["repository"].update(url=url, branch="dev")
+        (tmp_path / "_config.yml").write_text(yaml.safe_dump(cfg))
+        links = dict(launch.lab_links(nb, tmp_path / "_config.yml"))
+        assert links["source"] == source
+        assert ".git/" not in links.get("Colab", "") and "fork.git" not in links["Binder"]
 
 
 def test_setup_cell_is_a_no_op_where_balancelab_imports():
@@ -112,13 +137,113 @@ def test_on_colab_with_balancelab_installed_the_cell_only_turns_on_the_widget_ma
 
 
 def test_without_balancelab_and_off_colab_the_cell_says_how_to_install(tmp_path):
-    """A Python without the package (``-I -S``: no site-packages): no install, one line with the pip command."""
+    """A Python without the package (``-I -S``: no site-packages): no install; what is missing and the
+    command that installs the package WITH its lab extras (ipywidgets) into a virtual environment."""
     proc = subprocess.run([sys.executable, "-I", "-S", "-c", launch.setup_source(*UPSTREAM)],
                           capture_output=True, text=True, cwd=tmp_path, timeout=60)
     assert proc.returncode == 0, proc.stderr
-    assert proc.stdout.count("\n") == 1
-    assert proc.stdout.startswith("Set-up: balancelab is not installed here.")
-    assert f'pip install "{launch.install_source(*UPSTREAM)}"' in proc.stdout
+    assert proc.stdout.startswith("Set-up: balancelab and ipywidgets are not installed here")
+    assert f'.venv/bin/python -m pip install "balancelab[labs] @ {launch.install_source(*UPSTREAM)}"' in proc.stdout
+    assert "python3 -m venv .venv" in proc.stdout and "labs/README.md" in proc.stdout
+    assert "pick the kernel you installed into" in proc.stdout and "is installed." not in proc.stdout
+
+
+def _run_cell(source, missing=(), colab=False, pip=None):
+    """Run a set-up cell here with the modules ``missing`` hidden and ``subprocess.run`` replaced by ``pip``."""
+    real = importlib.util.find_spec
+    calls = []
+    output = type(sys)("google.colab.output")
+    output.enable_custom_widget_manager = lambda: calls.append("widgets on")
+    colab_mod = type(sys)("google.colab")
+    colab_mod.output = output
+    fake = {"google.colab": colab_mod, "google.colab.output": output} if colab else {}
+
+    def run(args, **kw):
+        calls.append((args, kw))
+        return pip(args, **kw)
+
+    with mock.patch.dict(sys.modules, fake), \
+            mock.patch("importlib.util.find_spec", lambda name, *a: None if name in missing else real(name, *a)), \
+            mock.patch("subprocess.run", run if pip else mock.Mock(side_effect=AssertionError("pip"))):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(source, {})
+    return out.getvalue(), calls
+
+
+def test_balancelab_without_ipywidgets_is_not_reported_installed():
+    """B1: 'installed' only when ipywidgets imports too; otherwise what is missing and the [labs] command."""
+    for handout, command in [(False, f'"balancelab[labs] @ {launch.install_source(*UPSTREAM)}"'),
+                             (True, '"./package[labs]"')]:
+        out, calls = _run_cell(launch.setup_source(*UPSTREAM, handout=handout), missing=("ipywidgets",))
+        assert out.startswith("Set-up: ipywidgets is not installed here") and calls == []
+        assert f".venv/bin/python -m pip install {command}" in out and "is installed." not in out
+
+
+def test_on_colab_a_missing_ipywidgets_is_installed_with_a_timeout():
+    def pip(args, **kw):
+        return subprocess.CompletedProcess(args, 0, "", "")
+    out, calls = _run_cell(launch.setup_source(*UPSTREAM), missing=("ipywidgets",), colab=True, pip=pip)
+    (args, kw), on = calls
+    assert args[-1] == "ipywidgets" and launch.install_source(*UPSTREAM) not in args   # balancelab is there
+    assert args[args.index("--timeout") + 1] == "60" and 0 < kw["timeout"] <= 900 and on == "widgets on"
+
+
+def test_on_colab_a_pip_that_hangs_stops_with_a_clear_message():
+    def pip(args, **kw):
+        raise subprocess.TimeoutExpired(args, kw["timeout"])
+    with pytest.raises(RuntimeError, match=r"pip could not install git\+.* within 15 minutes: check the connection"):
+        _run_cell(launch.setup_source(*UPSTREAM), missing=("balancelab",), colab=True, pip=pip)
+
+
+def test_on_colab_pips_error_is_shown_without_colour_codes():
+    def pip(args, **kw):
+        return subprocess.CompletedProcess(args, 1, "", "\x1b[1;31mERROR:\x1b[0m repository \x1b[33mnot found\x1b[0m")
+    with pytest.raises(RuntimeError) as err:
+        _run_cell(launch.setup_source(*UPSTREAM), missing=("balancelab",), colab=True, pip=pip)
+    assert str(err.value).endswith("ERROR: repository not found") and "\x1b" not in str(err.value)
+
+
+def test_handout_notebooks_advise_the_handouts_own_install_line(tmp_path):
+    """B1: a hand-out notebook names ./package[labs] and the hand-out's README.md, not a git install of main."""
+    out = labtools.handout(tmp_path / "handout")
+    readme = (out / "README.md").read_text(encoding="utf-8")
+    for path in sorted((out / "labs").glob("*.ipynb")):
+        cell = _code_cells(nbformat.read(path, as_version=4))[0]
+        assert cell.source == launch.setup_source(*UPSTREAM, handout=True), path.name
+    proc = subprocess.run([sys.executable, "-I", "-S", "-c", cell.source], capture_output=True, text=True,
+                          cwd=tmp_path, timeout=60)
+    command = '.venv/bin/python -m pip install "./package[labs]"'
+    assert command in proc.stdout and command in readme
+    assert "README.md at the top of the hand-out" in proc.stdout and "labs/README.md" not in proc.stdout
+    assert "pick the kernel you installed into" in proc.stdout and "git+" not in proc.stdout
+
+
+LAPTOP_TEXTS = {"hand-out README": launch.STUDENT_README, "labs page": launch.LAPTOP_STEPS,
+                "labs/README.md": (ROOT / "labs" / "README.md").read_text(encoding="utf-8").split(
+                    "## For students")[1].split("\n## ")[0]}
+
+
+@pytest.mark.parametrize("where", LAPTOP_TEXTS)
+def test_laptop_steps_work_on_a_pep668_system_without_python(where):
+    """B2: a venv is required (python3, py on Windows, apt's python3-venv), pip runs as .venv's python."""
+    text = LAPTOP_TEXTS[where]
+    for words in ("python3 -m venv .venv", "py -m venv .venv", "apt install python3-venv",
+                  '.venv/bin/python -m pip install "./package[labs]"', ".venv\\Scripts\\python -m pip install",
+                  "VS Code", ".venv", "JupyterLab"):
+        assert words in text, words
+    commands = [ln.strip() for ln in text.splitlines() if ln.strip()]
+    assert not any(ln.startswith(("pip ", "python ", "source ")) for ln in commands), commands
+    assert "# optional" not in text   # the venv was marked optional
+
+
+def test_jupyterhub_requirements_are_documented_for_instructors():
+    """B3: the hub image needs nbgitpuller, balancelab[labs] and jupytext (README and labs README)."""
+    publishing = (ROOT / "README.md").read_text(encoding="utf-8").split("## Publishing")[1].split("\n## ")[0]
+    labs = (ROOT / "labs" / "README.md").read_text(encoding="utf-8").split("## For instructors")[1].split("\n## ")[0]
+    for text in (publishing, labs):
+        for words in ("nbgitpuller", "balancelab[labs]", "jupytext", "jupyterhub_url"):
+            assert words in text, words
 
 
 def test_graded_student_notebook_runs_the_setup_cell_as_a_no_op(tmp_path):
@@ -200,10 +325,36 @@ def test_lab_links_follow_the_configuration(tmp_path):
         launch.lab_links(nb, tmp_path / "_config.yml")
 
 
+@pytest.mark.parametrize("hub", ["https://hub.example.edu", "https://hub.example.edu/", "https://hub.example.edu/hub",
+                                 "https://hub.example.edu/hub/"])
+def test_a_hub_address_ending_in_hub_gives_no_double_hub(hub):
+    url = launch.nbgitpuller_url(hub, "https://github.com/o/r", "main", "labs/a.ipynb")
+    assert urlsplit(url).path == "/hub/user-redirect/git-pull"
+
+
+def test_labs_page_names_only_the_ways_it_links(tmp_path):
+    """A GitLab fork gets no Colab link, so the page does not offer Colab (Binder is the quickest start)."""
+    cfg = yaml.safe_load((ROOT / "_config.yml").read_text())
+    cfg["repository"].update(url="https://gitlab.com/teach/course", branch="main")
+    (tmp_path / "_config.yml").write_text(yaml.safe_dump(cfg))
+    text = launch.ways_text(tmp_path / "_config.yml")
+    assert "Colab" not in text and text.splitlines()[0].startswith("- **Binder**") and "quickest start" in text
+    assert "JupyterHub" not in text
+    cfg["launch_buttons"].update(binderhub_url="", jupyterhub_url="https://hub.uni.edu")
+    (tmp_path / "_config.yml").write_text(yaml.safe_dump(cfg))
+    text = launch.ways_text(tmp_path / "_config.yml")
+    assert text.splitlines()[0].startswith("- **JupyterHub**") and "quickest start" in text
+    assert "Binder" not in text and "Colab" not in text and "laptop" in text
+    first = launch.ways_text().splitlines()[0]
+    assert first.startswith("- **Colab**") and "quickest start" in first       # upstream: GitHub, Colab first
+
+
 def test_labs_page_builds_its_links_from_the_library():
     """book/labs.md lists each lab's links through balancelab.course.launch (one place, tested here)."""
-    text = (ROOT / "book" / "labs.md").read_text(encoding="utf-8")
-    assert "from balancelab.course.launch import lab_links" in text
+    page = (ROOT / "book" / "labs.md").read_text(encoding="utf-8")
+    assert "from balancelab.course.launch import lab_links" in page
+    assert "ways_text(CONFIG)" in page and "Markdown(LAPTOP_STEPS)" in page and "quickest" not in page
+    text = page + launch.ways_text() + launch.LAPTOP_STEPS
     for word in ("Colab", "Binder", "JupyterHub", "VS Code", "JupyterLab"):
         assert word in text, word
 
@@ -382,7 +533,7 @@ def test_colab_simulated_installs_the_course_and_runs_a_lab_to_its_first_explore
     cell = launch.setup_source(repo, "main")
     plain = subprocess.run([python, "-c", cell], env=_clean_env(), capture_output=True, text=True, timeout=60,
                            cwd=tmp_path)   # not the checkout: "python -c" imports from its working directory
-    assert plain.returncode == 0 and plain.stdout.startswith("Set-up: balancelab is not installed here.")
+    assert plain.returncode == 0 and plain.stdout.startswith("Set-up: balancelab is not installed here (")
     # 2. on Colab with an address that does not exist: the cell fails and says what pip said
     bad = subprocess.run([python, "-c", launch.setup_source(repo + "-missing", "main")], env=colab_env,
                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
@@ -411,13 +562,13 @@ def test_handout_installs_in_a_fresh_venv_with_its_one_line_and_runs_a_lab(tmp_p
     """The hand-out alone (no repository around it): its README's pip line, then a lab to its first explorer."""
     out = labtools.handout(tmp_path / "handout")
     readme = (out / "README.md").read_text(encoding="utf-8")
-    lines = [ln.strip() for ln in readme.splitlines() if ln.strip().startswith("pip install ")]
+    lines = [ln.strip() for ln in readme.splitlines() if ln.strip().startswith(".venv/bin/python -m pip install ")]
     assert len(lines) == 1, lines
-    for words in ("jupyter lab labs/", "VS Code", "Select Kernel", "Jupyter"):
+    for words in ("jupyter lab labs/", "VS Code", "Select Kernel", "Jupyter"):   # the venv: at tmp_path/laptop
         assert words in readme, words
     venv = _venv(tmp_path / "laptop")
     env = _clean_env(PATH=f"{venv / 'bin'}{os.pathsep}{os.environ['PATH']}", VIRTUAL_ENV=str(venv))
-    proc = subprocess.run(lines[0], shell=True, cwd=out, env=env, capture_output=True, text=True, timeout=900)
+    proc = subprocess.run(lines[0].replace(".venv/bin/python", str(venv / "bin" / "python")), shell=True, cwd=out, env=env, capture_output=True, text=True, timeout=900)
     assert proc.returncode == 0, proc.stderr[-3000:]
     lab = subprocess.run([str(venv / "bin" / "jupyter"), "lab", "--version"], env=env, capture_output=True,
                          text=True, timeout=120)

@@ -30,7 +30,7 @@ import shutil
 import sys
 from pathlib import Path
 
-from .launch import STUDENT_README, add_setup_cell, course_repository
+from .launch import SETUP_TAG, STUDENT_README, add_setup_cell, course_repository, setup_source
 
 __all__ = ["PLACEHOLDER", "ANSWER_PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
            "stale", "execute_notebook", "stable_widget_id", "handout", "autograder", "main"]
@@ -449,10 +449,24 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
     if out.exists() and any(out.iterdir()):
         raise FileExistsError(f"{out} exists and is not empty")
     generate(src, out / "labs")
+    _handout_setup_cells(out / "labs")
     _copy_package(out / "package")
     (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
     _scan_handout(out, src)
     return out
+
+
+def _handout_setup_cells(labs: Path) -> None:
+    """The hand-out's set-up cells advise its own install line (``./package[labs]``, its README.md)."""
+    import nbformat
+
+    repository = course_repository()
+    for path in sorted(labs.glob("*.ipynb")):
+        nb = nbformat.read(path, as_version=4)
+        for cell in nb.cells:
+            if SETUP_TAG in cell.metadata.get("tags", []):
+                cell.source = setup_source(*repository, handout=True)
+        path.write_text(nbformat.writes(nb) + "\n", encoding="utf-8")
 
 
 def _scan_handout(out: Path, src) -> None:

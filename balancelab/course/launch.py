@@ -17,44 +17,54 @@ What it may import: nothing of the library (it is read by the book and by ``labt
 from __future__ import annotations
 
 from pathlib import Path
-from urllib.parse import quote, urlencode
+from urllib.parse import quote, urlencode, urlsplit
 
-__all__ = ["SETUP_TAG", "STUDENT_README", "course_repository", "install_source", "setup_source", "add_setup_cell",
+__all__ = ["SETUP_TAG", "STUDENT_README", "LAPTOP_STEPS", "ways_text", "course_repository", "install_source", "setup_source", "add_setup_cell",
            "binder_url", "colab_url", "nbgitpuller_url", "lab_links"]
 
 _ROOT = Path(__file__).resolve().parents[2]
 #: The cell tag of the set-up cell (student notebooks only).
 SETUP_TAG = "setup"
-_SCHEMES = ("https://", "http://", "file://", "ssh://")
+#: Path parts that make an address a web page of a repository rather than the repository.
+_PAGE_PARTS = {"tree", "blob", "-", "commit", "raw", "src"}
+_FORM = ("https://host/owner/repo (e.g. https://github.com/me/balancelab; a branch goes in "
+         "repository.branch, not in the address)")
 COLAB = "https://colab.research.google.com"
 
+#: How to install on a laptop, in the hand-out folder: a virtual environment is required (Debian 12
+#: and Ubuntu 24.04 have no ``python`` command and their system pip refuses to install, PEP 668).
+LAPTOP_STEPS = """\
+1. Make a virtual environment (once):
+
+       python3 -m venv .venv
+
+   Windows: `py -m venv .venv`. On Debian or Ubuntu, if it says *ensurepip is not available*,
+   run `sudo apt install python3-venv` first.
+2. Install the course package with JupyterLab and ipywidgets into it (once, with an internet
+   connection; pip fetches numpy, scipy, sympy and matplotlib):
+
+       .venv/bin/python -m pip install "./package[labs]"
+
+   Windows: `.venv\\Scripts\\python -m pip install "./package[labs]"`.
+3. Open a lab, in either of
+   * **JupyterLab**: `.venv/bin/jupyter lab labs/` (Windows: `.venv\\Scripts\\jupyter lab labs`)
+     opens in your browser; double-click a lab, then *Run > Run All Cells*;
+   * **VS Code**: install the *Python* and *Jupyter* extensions, open this folder, open a lab,
+     click *Select Kernel* (top right) and choose the `.venv` Python, then *Run All*.
+"""
+
 #: The hand-out's README (``labtools handout``): install once, then open a lab on a laptop.
-STUDENT_README = """# balancelab labs
+STUDENT_README = f"""# balancelab labs
 
 This folder holds the labs (`labs/`) and the course package they need (`package/`).
+You need Python 3.10 or newer. In a terminal, in this folder:
 
-## Install (once, with Python >= 3.10 and an internet connection)
+{LAPTOP_STEPS}
+After the install the labs need no network.
 
-In a terminal, in this folder:
-
-    pip install "./package[labs]"
-
-That one line installs `balancelab` with JupyterLab and ipywidgets (pip fetches numpy, scipy,
-sympy and matplotlib). To keep the course apart from your other Python work, make a virtual
-environment first: `python -m venv .venv`, then `source .venv/bin/activate` (Windows:
-`.venv\\Scripts\\activate`), then the line above. After that the labs need no network.
-
-## Open a lab
-
-* **JupyterLab**: `jupyter lab labs/` opens in your browser; double-click a lab, then
-  *Run > Run All Cells*.
-* **VS Code**: install the *Python* and *Jupyter* extensions, open this folder, open a lab
-  (`labs/lab1_...ipynb`), click *Select Kernel* (top right) and choose the Python where you
-  installed the package (`.venv` if you made one), then *Run All*.
-
-The first code cell says `Set-up: balancelab is installed.` when all is well. If it says the
-package is not installed, the notebook runs in another Python than the one you installed into:
-choose that one as the kernel.
+The first code cell of a lab says `Set-up: balancelab is installed.` when all is well. If it
+says something is not installed, the notebook runs in another Python than the one you installed
+into: pick the kernel you installed into (`.venv`), or run the install line above.
 
 ## Work on a lab
 
@@ -64,23 +74,40 @@ in a string (`"22 cm"`). If your instructor gave you a student id, write it in t
 `STUDENT_ID = ""` near the top. Hand in the `.ipynb` file.
 """
 
-_SETUP = '''\
-# Set-up: on Google Colab this installs the course package; anywhere else it does nothing.
+#: What the set-up cell tells a student who lacks the package off Colab, by where the notebook is.
+_ADVICE = {
+    False: ('In a terminal:  python3 -m venv .venv  then  .venv/bin/python -m pip install '
+            '"balancelab[labs] @ {source}"  (Windows: py -m venv .venv, then .venv\\Scripts\\python; in a copy '
+            'of the repository install ".[labs]"). See "For students" in labs/README.md.'),
+    True: ('In a terminal, in the hand-out folder:  python3 -m venv .venv  then  .venv/bin/python -m pip install '
+           '"./package[labs]"  (Windows: py -m venv .venv, then .venv\\Scripts\\python). '
+           'See README.md at the top of the hand-out folder.'),
+}
+
+_SETUP = r'''# Set-up: on Google Colab this installs the course package; anywhere else it only checks it.
 def _set_up(source="{source}"):
-    import importlib.util, subprocess, sys
+    import importlib.util, re, subprocess, sys
     on_colab = "google.colab" in sys.modules
-    if importlib.util.find_spec("balancelab") is not None:
+    missing = [m for m in ("balancelab", "ipywidgets") if importlib.util.find_spec(m) is None]
+    if not missing:
         done = "balancelab is installed"
     elif on_colab:
-        pip = subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", source],
-                             capture_output=True, text=True)
+        wanted = [source] * ("balancelab" in missing) + ["ipywidgets"] * ("ipywidgets" in missing)
+        try:
+            pip = subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", "--timeout", "60", *wanted],
+                                 capture_output=True, text=True, timeout=900)
+        except subprocess.TimeoutExpired:
+            raise RuntimeError(f"pip could not install {{source}} within 15 minutes: check the connection, "
+                               "then run this cell again") from None
         if pip.returncode:
-            raise RuntimeError(f"pip could not install {{source}}:\\n{{pip.stderr[-3000:]}}")
+            said = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", pip.stderr)[-3000:]
+            raise RuntimeError(f"pip could not install {{source}}:\n{{said}}")
         importlib.invalidate_caches()
         done = f"installed balancelab from {{source}}"
     else:
-        print(f"Set-up: balancelab is not installed here. Run  pip install \\"{{source}}\\"  "
-              "(or follow the labs README), then restart the kernel.")
+        print(f"Set-up: {{' and '.join(missing)}} {{'is' if len(missing) == 1 else 'are'}} not installed here "
+              f"(in this kernel's Python, {{sys.executable}}).\n" + {advice!r} +
+              "\nThen pick the kernel you installed into (.venv) and run this cell again.")
         return
     if on_colab:
         from google.colab import output
@@ -109,8 +136,9 @@ def course_repository(config: str | Path = _ROOT / "_config.yml") -> tuple[str, 
     Raises
     ------
     ValueError
-        If ``repository.url`` is missing or not an ``https://``, ``http://``, ``ssh://`` or
-        ``file://`` address, or the branch is empty or holds a space.
+        If ``repository.url`` is missing or not a repository's ``https://host/owner/repo``
+        address (``file://`` is accepted for local tests; ``ssh://``, ``git@…`` and web pages
+        such as ``…/tree/dev`` are not), or the branch is empty or holds a space.
 
     Examples
     --------
@@ -126,11 +154,31 @@ def course_repository(config: str | Path = _ROOT / "_config.yml") -> tuple[str, 
 
 
 def _checked(url, branch) -> tuple[str, str]:
-    if not isinstance(url, str) or not url.startswith(_SCHEMES) or any(c in url for c in ' "\'\\\n'):
-        raise ValueError(f"repository.url must be an address starting with one of {_SCHEMES}, got {url!r}")
+    if not _usable(url):
+        raise ValueError(f"repository.url must be a repository's address {_FORM}, got {url!r}")
     if not isinstance(branch, str) or not branch or any(c in branch for c in ' "\'\\\n@'):
         raise ValueError(f"repository.branch must be a branch name without spaces, quotes or '@', got {branch!r}")
     return url.rstrip("/"), branch
+
+
+def _usable(url) -> bool:
+    """An ``https://host/owner/repo`` address (or a ``file://`` one, for local tests)."""
+    if not isinstance(url, str) or any(c in url for c in ' "\'\\\n?#'):
+        return False
+    if url.startswith("file://"):
+        return len(url) > len("file://")
+    parts = urlsplit(url)
+    path = [p for p in parts.path.split("/") if p]
+    if parts.scheme != "https" or not parts.hostname or "@" in parts.netloc or not path:
+        return False
+    if parts.hostname == "github.com" and len(path) != 2:
+        return False
+    return not _PAGE_PARTS & set(path)
+
+
+def _web(url: str) -> str:
+    """The repository's web page (a clone address's ``.git`` dropped)."""
+    return url.removesuffix(".git")
 
 
 def install_source(url: str, branch: str) -> str:
@@ -139,7 +187,7 @@ def install_source(url: str, branch: str) -> str:
     Parameters
     ----------
     url : str
-        The repository address (``https://``, ``http://``, ``ssh://`` or ``file://``).
+        The repository address (``https://host/owner/repo``, or ``file://`` for local tests).
     branch : str
         The branch (or tag) to install.
 
@@ -162,20 +210,26 @@ def install_source(url: str, branch: str) -> str:
     return f"git+{url}@{branch}"
 
 
-def setup_source(url: str, branch: str) -> str:
+def setup_source(url: str, branch: str, handout: bool = False) -> str:
     """The source of the set-up cell that installs the course package on Colab.
 
     Parameters
     ----------
     url, branch : str
         The repository to install from (see :func:`install_source`).
+    handout : bool
+        True for the notebooks of the hand-out (``labtools handout``): off Colab the cell then
+        advises the hand-out's own install line (``"./package[labs]"``, its ``README.md``)
+        instead of the repository's.
 
     Returns
     -------
     str
-        Python code: a no-op (one printed line) where ``balancelab`` imports; on Colab it runs
-        ``pip install git+URL@BRANCH`` and ``google.colab.output.enable_custom_widget_manager()``;
-        elsewhere it prints how to install.
+        Python code: a no-op (one printed line) where ``balancelab`` and ``ipywidgets`` import;
+        on Colab it runs ``pip install git+URL@BRANCH`` (and ipywidgets if missing; pip's network
+        timeout 60 s, 15 minutes in all) and ``google.colab.output.enable_custom_widget_manager()``;
+        elsewhere it prints what is missing and how to install it into a virtual environment
+        (``[labs]``: with ipywidgets and JupyterLab).
 
     Examples
     --------
@@ -186,10 +240,11 @@ def setup_source(url: str, branch: str) -> str:
     >>> out.getvalue()
     'Set-up: balancelab is installed.\\n'
     """
-    return _SETUP.format(source=install_source(url, branch))
+    source = install_source(url, branch)
+    return _SETUP.format(source=source, advice=_ADVICE[bool(handout)].format(source=source))
 
 
-def add_setup_cell(nb, url: str, branch: str):
+def add_setup_cell(nb, url: str, branch: str, handout: bool = False):
     """Put the set-up cell before the first code cell of a notebook (in place).
 
     Parameters
@@ -198,6 +253,8 @@ def add_setup_cell(nb, url: str, branch: str):
         A student notebook.
     url, branch : str
         The repository the cell installs from on Colab.
+    handout : bool
+        Whether the notebook goes into the hand-out (see :func:`setup_source`).
 
     Returns
     -------
@@ -214,7 +271,7 @@ def add_setup_cell(nb, url: str, branch: str):
     """
     import nbformat
 
-    cell = nbformat.v4.new_code_cell(setup_source(url, branch), metadata={"tags": [SETUP_TAG]})
+    cell = nbformat.v4.new_code_cell(setup_source(url, branch, handout), metadata={"tags": [SETUP_TAG]})
     if (nb.nbformat, nb.nbformat_minor) >= (4, 5):
         cell["id"] = "balancelab-setup"   # a fixed id: regenerating leaves no git diff
     else:
@@ -260,7 +317,7 @@ def binder_url(binderhub: str, url: str, branch: str, path: str) -> str:
     if gh:
         spec = f"gh/{gh}"
     elif url.startswith("https://gitlab.com/"):
-        spec = "gl/" + quote(url[len("https://gitlab.com/"):].removesuffix(".git"), safe="")
+        spec = "gl/" + quote(_web(url)[len("https://gitlab.com/"):], safe="")
     else:
         spec = "git/" + quote(url, safe="")
     return f"{binderhub.rstrip('/')}/v2/{spec}/{quote(branch, safe='')}?" + urlencode({"urlpath": f"lab/tree/{path}"})
@@ -327,7 +384,13 @@ def nbgitpuller_url(hub: str, url: str, branch: str, path: str) -> str:
     url, branch = _checked(url, branch)
     folder = url.split("/")[-1]
     query = urlencode({"repo": url, "branch": branch, "urlpath": f"lab/tree/{folder}/{path}"})
-    return f"{hub.rstrip('/')}/hub/user-redirect/git-pull?{query}"
+    return f"{_hub_root(hub)}/hub/user-redirect/git-pull?{query}"
+
+
+def _hub_root(hub: str) -> str:
+    """The hub's root address: ``https://x/hub/`` and ``https://x/hub`` both give ``https://x``."""
+    root = hub.rstrip("/")
+    return root[:-len("/hub")] if root.endswith("/hub") and root.count("/") > 2 else root
 
 
 def lab_links(path: str, config: str | Path = _ROOT / "_config.yml") -> list[tuple[str, str]]:
@@ -364,7 +427,49 @@ def lab_links(path: str, config: str | Path = _ROOT / "_config.yml") -> list[tup
     if buttons.get("jupyterhub_url"):
         links.append(("JupyterHub", nbgitpuller_url(buttons["jupyterhub_url"], url, branch, path)))
     if _github(url):
-        links.append(("source", f"{url}/blob/{quote(branch)}/{quote(path)}"))
+        links.append(("source", f"{_web(url)}/blob/{quote(branch)}/{quote(path)}"))
     elif url.startswith("https://gitlab.com/"):
-        links.append(("source", f"{url}/-/blob/{quote(branch)}/{quote(path)}"))
+        links.append(("source", f"{_web(url)}/-/blob/{quote(branch)}/{quote(path)}"))
     return links
+
+
+_WAYS = {
+    "Colab": ("**Colab** (a Google account, nothing to install): the lab's first cell installs the course "
+              "package (about half a minute) and turns on Colab's widgets. Colab keeps nothing unless you "
+              "choose *File > Save a copy in Drive*."),
+    "Binder": ("**Binder** (no account, nothing to install): JupyterLab in your browser with everything "
+               "installed. Starting can take a few minutes, a session that sits idle for about ten minutes "
+               "is shut down and nothing is kept: *File > Download* your notebook before you leave."),
+    "JupyterHub": ("**JupyterHub** (your course's hub, its links below): your work stays in your account. "
+                   "The link copies the labs into your home folder the first time and later brings them up "
+                   "to date without overwriting what you changed."),
+}
+
+
+def ways_text(config: str | Path = _ROOT / "_config.yml") -> str:
+    """The labs page's list of ways into a lab: only those the configuration makes links for.
+
+    Parameters
+    ----------
+    config : str or Path
+        The Jupyter Book configuration (see :func:`lab_links`).
+
+    Returns
+    -------
+    str
+        Markdown bullets: Colab, Binder and JupyterHub when :func:`lab_links` makes such links
+        (the first of them called the quickest start), then the laptop.
+
+    Examples
+    --------
+    >>> "quickest start" in ways_text().splitlines()[0]
+    True
+    """
+    made = {name for name, _ in lab_links("labs/student/lab1_counterweights.ipynb", config)}
+    bullets = [f"- {text}" for name, text in _WAYS.items() if name in made]
+    if bullets:
+        head, rest = bullets[0].split(": ", 1)
+        bullets[0] = f"{head}: the quickest start. {rest[0].upper()}{rest[1:]}"
+    bullets.append("- **Your laptop** (Python 3.10 or newer): works offline once installed, and is the best "
+                   "place for work you hand in; the steps are below.")
+    return "\n".join(bullets)
