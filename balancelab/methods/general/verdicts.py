@@ -27,7 +27,7 @@ from .problem import Problem, harmonics
 __all__ = ["VERDICTS", "infeasible", "nice_box"]
 
 #: the three reasons a balance problem has no admissible solution
-VERDICTS = ("impossible", "negative", "box")
+VERDICTS = ("impossible", "negative", "box", "not_found")
 
 _TERM_TOL = 1e-9  # energy terms below this fraction of the loads' exchanged energy are round-off
 
