@@ -183,17 +183,25 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
+def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energies: np.ndarray | None = None,
+               roundoff: float = 0.0) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
     e.g. a force and its opposite) are added up first, then groups whose energies cancel
-    (equal and opposite forces at two points of a translating body, say); the scale is the
+    (equal and opposite forces at two points of a translating body, say); ``L`` is the
     sum of the spreads ``max - min`` of these groups' energies. Springs do not enter it, so springs that
-    cancel each other cannot inflate it. A design whose loads exchange no energy (a
-    spring-loaded mechanism, or loads that only stand still; below ``1e-12 * scale``)
-    has its springs as the load: the scale is then ``scale``, the sum of the spreads of
-    every element's energy.
+    cancel each other cannot inflate it.
+
+    Loads that cancel as a *set* (three forces on one body with zero resultant and zero moment, or
+    ``F, F, -2F`` on three bodies that move alike) can still inflate ``L``. So when the springs do
+    work (the spread of their summed energy is above ``roundoff``), the yardstick is
+    ``min(L, max(spread of the summed load energy, spread of the summed spring energy))``: net
+    energies, which cancelling terms cannot inflate, and which a balanced design makes equal
+    (what the springs store is what the loads give). A design whose loads exchange no energy
+    (a spring-loaded mechanism, or loads that only stand still; ``L`` below ``roundoff`` and
+    below ``1e-12`` of the loads' largest energy) has its springs as the load: the scale is then ``scale``, the sum
+    of the spreads of every element's energy.
 
     Parameters
     ----------
@@ -204,6 +212,10 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
         Energy of each load (J), as from ``design.element_energies(q)[0]``.
     scale : float
         Sum of the spreads of every load's and spring's energy (J).
+    spring_energies : numpy.ndarray, shape (m, n_springs), optional
+        Energy of each spring (J), ``design.element_energies(q)[1]``; without it only ``L`` is used.
+    roundoff : float
+        The round-off of the summed energy (J), see :data:`ROUND_OFF_ALLOWANCE`.
 
     Returns
     -------
@@ -232,7 +244,13 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
                     break
         sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
         total = sum(float(np.ptp(e)) for e in _cancel(sums))
-    return total if total > _ROUND_OFF * scale else scale
+    if spring_energies is not None and spring_energies.size:
+        net_springs = float(np.ptp(spring_energies.sum(-1)))
+        if net_springs > roundoff:
+            net_loads = float(np.ptp(load_energies.sum(-1))) if load_energies.size else 0.0
+            return min(total, max(net_loads, net_springs)) if total > roundoff else net_springs
+    still = _ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0)
+    return total if total > max(still, roundoff) else scale
 
 
 def _cancel(energies: list) -> list:
@@ -275,10 +293,10 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     if scale == 0.0:
         raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
                          "so there is nothing to balance")
-    yardstick = load_scale(design, q, vl, scale)
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
+    yardstick = load_scale(design, q, vl, scale, vs, roundoff)
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
