@@ -27,7 +27,7 @@ import numpy as np
 from .validation import positive_int
 
 __all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "check_tolerance", "reachable_extent", "load_scale"]
+           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
 #: potential energy over the sampled configurations, divided by the load scale.
@@ -68,7 +68,8 @@ class BalanceReport:
     variation : float
         ``(max V - min V) / scale`` over the configurations: 0 for a perfect balance.
     residual : float
-        Largest generalized force ``|dV/dq|`` (J/rad) divided by ``scale`` (1/rad).
+        Largest generalized force ``|dV/dq|`` (J/rad, or N for a slide) divided by ``scale``
+        (1/rad or 1/m).
     scale : float
         Energy scale (J): the sum over every load and spring of the spread of its own
         energy over the configurations. It does not depend on where the origin is.
@@ -87,6 +88,8 @@ class BalanceReport:
         The energy the loads exchange (J), see :func:`load_scale`; at most ``scale``.
     load_variation : float
         ``(max V - min V) / load_scale``: the number the verdict compares with ``tolerance``.
+    q_units : tuple of str
+        Unit of each coordinate (``"rad"`` or ``"m"``), for printing ``worst_q``.
 
     Examples
     --------
@@ -106,15 +109,57 @@ class BalanceReport:
     n: int
     load_scale: float = math.nan
     load_variation: float = math.nan
+    q_units: tuple = ()
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
-        q = ", ".join(f"{np.degrees(v):.1f}°" for v in np.atleast_1d(self.worst_q))
+        units = self.q_units or ("rad",) * len(np.atleast_1d(self.worst_q))
+        q = format_q(units, self.worst_q)
+        per = " or ".join(sorted(set(units), reverse=True))
         return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
                 f"({self.load_scale:.4g} J) over {self.n} configurations; "
-                f"largest residual dV/dq = {self.residual:.2e} × scale per rad at q = ({q}); "
+                f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
+
+
+def q_units(design) -> tuple[str, ...]:
+    """Unit of each configuration coordinate of ``design``: ``"rad"`` (an angle) or ``"m"`` (a slide).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> q_units(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3))
+    ('rad',)
+    """
+    units = getattr(design.kinematics, "units", None)
+    return tuple(units) if units is not None else ("rad",) * design.dof
+
+
+def q_shown(unit: str, value):
+    """A coordinate as shown to a reader: an angle (rad) in degrees, a slide (m) as it is.
+
+    Examples
+    --------
+    >>> float(q_shown("rad", np.pi)), q_shown("m", 0.4)
+    (180.0, 0.4)
+    """
+    return np.degrees(value) if unit == "rad" else value
+
+
+def format_q(units, q, names=None) -> str:
+    """``"22.9°, 0.4 m"``: a configuration in its units (degrees for angles, metres for slides).
+
+    Examples
+    --------
+    >>> format_q(("rad", "m"), [0.4, 0.4])
+    '22.9°, 0.4 m'
+    """
+    out = []
+    for i, (unit, v) in enumerate(zip(units, np.atleast_1d(q))):
+        text = f"{np.degrees(v):.1f}°" if unit == "rad" else f"{v:.4g} m"
+        out.append(f"{names[i]} = {text}" if names else text)
+    return ", ".join(out)
 
 
 def check_tolerance(tolerance) -> float:
@@ -303,4 +348,4 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
                          balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
-                         load_scale=yardstick, load_variation=spread / yardstick)
+                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design))
