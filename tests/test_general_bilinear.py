@@ -76,3 +76,31 @@ def test_impossible_only_when_the_relaxation_fails():
         bl.balance(d, springs=[(("arm", None), ("ground", None))], box=((-0.01, 0.01), (-0.01, 0.01)))
     except bl.InfeasibleDesign as err:
         assert err.verdict in ("box", "not_found", "negative"), str(err)
+
+
+def _telescoping_arm():
+    lk = bl.Linkage("telescoping arm")
+    lk.revolute("ground", (0, 0), "arm", (0, 0))
+    lk.prismatic("arm", (0, 0), "slide", (0, 0), axis=(1, 0), stroke=(0.2, 0.8))
+    lk.mass("slide", 1.0)
+    lk.mass("arm", 0.5, at=(0.3, 0))
+    return lk.build()
+
+
+def test_no_scipy_warning_leaks_from_an_infeasible_telescoping_arm():
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(bl.InfeasibleDesign) as info:
+            bl.balance(_telescoping_arm(), counterweights=[("arm", None), ("slide", None)])
+    assert info.value.verdict in ("negative", "impossible")
+
+
+def test_leftover_terms_of_a_slide_name_the_slide():
+    """A counterweight on the arm cannot cancel m g s sin θ of the sliding mass (1 kg): the message
+    names that term, with its coefficient m g = 9.81 J per m."""
+    with pytest.raises(bl.InfeasibleDesign) as info:
+        bl.balance(_telescoping_arm(), counterweights=[("arm", None)])
+    assert info.value.verdict == "impossible"
+    assert "9.81 J × s_1 sin θ_1" in str(info.value)
