@@ -228,8 +228,7 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energies: np.ndarray | None = None,
-               roundoff: float = 0.0) -> float:
+def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
@@ -238,12 +237,10 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energi
     sum of the spreads ``max - min`` of these groups' energies. Springs do not enter it, so springs that
     cancel each other cannot inflate it.
 
-    Loads that cancel as a *set* (three forces on one body with zero resultant and zero moment, or
-    ``F, F, -2F`` on three bodies that move alike) can still inflate ``L``. So when the springs do
-    work (the spread of their summed energy is above ``roundoff``), the yardstick is
-    ``min(L, max(spread of the summed load energy, spread of the summed spring energy))``: net
-    energies, which cancelling terms cannot inflate, and which a balanced design makes equal
-    (what the springs store is what the loads give). A design whose loads exchange no energy
+    Loads that form a *set* of zero resultant force and zero moment on one body (three forces, say)
+    do no work in any motion: they are left out first (:func:`_null_sets`). Sets that cancel only
+    through the kinematics (``F, F, -2F`` on three bodies of a parallelogram) cannot be told from a
+    counterweight balancing a mass and still count. A design whose loads exchange no energy
     (a spring-loaded mechanism, or loads that only stand still; ``L`` below ``roundoff`` and
     below ``1e-12`` of the loads' largest energy) has its springs as the load: the scale is then ``scale``, the sum
     of the spreads of every element's energy.
@@ -257,8 +254,6 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energi
         Energy of each load (J), as from ``design.element_energies(q)[0]``.
     scale : float
         Sum of the spreads of every load's and spring's energy (J).
-    spring_energies : numpy.ndarray, shape (m, n_springs), optional
-        Energy of each spring (J), ``design.element_energies(q)[1]``; without it only ``L`` is used.
     roundoff : float
         The round-off of the summed energy (J), see :data:`ROUND_OFF_ALLOWANCE`.
 
@@ -276,7 +271,9 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energi
     >>> bool(abs(load_scale(d, q, vl, s) - s) < 1e-9 * s)  # counterweights: every load counts
     True
     """
-    loads = design.loads
+    null = _null_sets(design.loads)
+    loads = [ld for i, ld in enumerate(design.loads) if i not in null]
+    load_energies = load_energies[:, [i for i in range(len(design.loads)) if i not in null]]
     total = 0.0
     if loads:
         pts = design.world_points(q, [(ld.body, ld.point) for ld in loads])  # (m, nL, 2)
@@ -289,13 +286,40 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, spring_energi
                     break
         sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
         total = sum(float(np.ptp(e)) for e in _cancel(sums))
-    if spring_energies is not None and spring_energies.size:
-        net_springs = float(np.ptp(spring_energies.sum(-1)))
-        if net_springs > roundoff:
-            net_loads = float(np.ptp(load_energies.sum(-1))) if load_energies.size else 0.0
-            return min(total, max(net_loads, net_springs)) if total > roundoff else net_springs
     still = _ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0)
     return total if total > max(still, roundoff) else scale
+
+
+def _null_sets(loads) -> set:
+    """Indices of loads that form, on one body, a set of zero resultant force and zero moment (and
+    zero ``sum p . F``): such a set does no work in any motion of the body, it is no load at all.
+    On each body (up to 12 loads) the largest such subset is taken."""
+    from itertools import combinations
+
+    out: set = set()
+    bodies = sorted({ld.body for ld in loads})
+    for body in bodies:
+        idx = [i for i, ld in enumerate(loads) if ld.body == body]
+        if len(idx) < 2 or len(idx) > 12:
+            continue
+        F = np.array([loads[i].force for i in idx], dtype=float)
+        P = np.array([loads[i].point for i in idx], dtype=float)
+        for size in range(len(idx), 1, -1):
+            found = None
+            for sub in combinations(range(len(idx)), size):
+                f, p = F[list(sub)], P[list(sub)]
+                mag = float(np.abs(f).sum())
+                arm = mag * (float(np.abs(p).max()) + 1e-300)
+                net = np.abs(f.sum(0)).max()
+                moment = abs(float(np.sum(p[:, 0] * f[:, 1] - p[:, 1] * f[:, 0])))
+                dot = abs(float(np.sum(p * f)))
+                if mag > 0 and net <= 1e-12 * mag and moment <= 1e-12 * arm and dot <= 1e-12 * arm:
+                    found = sub
+                    break
+            if found is not None:
+                out.update(idx[k] for k in found)
+                break
+    return out
 
 
 def _cancel(energies: list) -> list:
@@ -341,7 +365,7 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
-    yardstick = load_scale(design, q, vl, scale, vs, roundoff)
+    yardstick = load_scale(design, q, vl, scale, roundoff)
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
