@@ -104,3 +104,17 @@ def test_leftover_terms_of_a_slide_name_the_slide():
         bl.balance(_telescoping_arm(), counterweights=[("arm", None)])
     assert info.value.verdict == "impossible"
     assert "9.81 J × s_1 sin θ_1" in str(info.value)
+
+
+@pytest.mark.parametrize("objective, kw", [
+    ("min_mass", dict(springs=[(("arm", None), ("ground", (0, 0.4)))])),
+    ("min_mass", dict(springs=[(("arm", None), ("ground", None))])),
+    ("min_stiffness", dict(springs=[(("arm", (0.25, 0)), ("ground", (0, 0.4)))], counterweights=[("arm", None)])),
+])
+def test_a_tie_break_is_never_silent(objective, kw):
+    """min_mass with springs only, min_stiffness with a free counterweight: the objective ignores
+    candidates (a free spring's rate can grow while its point shrinks, and so can a counterweight's
+    mass): many designs share the value, and a warning says so."""
+    with pytest.warns(UserWarning, match="does not select a unique design"):
+        out = bl.balance(_lever(), objective=objective, **kw)
+    assert out.balance_report().balanced

@@ -52,7 +52,7 @@ def planar_point(name: str, value, unit: str = "m") -> tuple[float, float]:
     >>> planar_point("force (N)", (0.0, 2e12), unit="N")
     Traceback (most recent call last):
     ...
-    ValueError: force (N) must have coordinates of magnitude <= 1e+12 N, got (0.0, 2000000000000.0)
+    ValueError: force (N) must have coordinates of magnitude <= 1e+12 N, got (0, 2e+12)
     """
     if isinstance(value, (str, bytes)) or value is None or isinstance(value, dict):
         raise TypeError(f"{name} must be a pair of numbers (x, y) in {'metres' if unit == 'm' else unit}, got {value!r}")
@@ -72,7 +72,7 @@ def planar_point(name: str, value, unit: str = "m") -> tuple[float, float]:
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite, got {tuple(arr)}")
     if np.abs(arr).max() > MAX_MAGNITUDE:
-        raise ValueError(f"{name} must have coordinates of magnitude <= {MAX_MAGNITUDE:g} {unit}, got {tuple(arr)}")
+        raise ValueError(f"{name} must have coordinates of magnitude <= {MAX_MAGNITUDE:g} {unit}, got ({arr[0]:g}, {arr[1]:g})")
     return (float(arr[0]), float(arr[1]))
 
 

@@ -201,7 +201,11 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     objective : {"min_preload", "min_stiffness", "min_mass"}
         Which balanced solution to pick when there are free choices: the least spring
         energy (Singh's minimum preload: the constant total energy as low as it goes), the
-        smallest total stiffness (N/m), or the smallest total counter mass (kg).
+        smallest total stiffness (N/m), or the smallest total counter mass (kg). Ties: an
+        objective ignores the candidates it does not count (counterweights for the stiffness,
+        springs for the mass); when other designs reach the same value a UserWarning says so,
+        and the design returned is simply the linear program's optimal vertex (HiGHS), picked
+        by no further rule.
     box : ((x_lo, x_hi), (y_lo, y_hi)), optional
         Where free points may go, in their bodies' local frames (m); by default a square
         of half-width the linkage's largest joint or load coordinate.
