@@ -245,3 +245,48 @@ def test_a_parallelogram_four_bar_driven_by_its_crank_keeps_its_coupler_level():
     assert d.kinematics.full_turn and d.reachable(q).all()
     P = d.poses(q)
     assert np.abs(wrap(P[:, 2, 2])).max() < 1e-9 and np.abs(wrap(P[:, 3, 2] - q)).max() < 1e-9
+
+
+# ---- linkages that cannot move (outside attack) ----
+
+def _flat_fourbar(crank, coupler, rocker, ground):
+    lk = bl.Linkage("flat four-bar")
+    lk.revolute("ground", (0, 0), "crank", (0, 0))
+    lk.revolute("crank", (crank, 0), "coupler", (0, 0))
+    lk.revolute("coupler", (coupler, 0), "rocker", (rocker, 0))
+    lk.revolute("rocker", (0, 0), "ground", (ground, 0))
+    return lk
+
+
+@pytest.mark.parametrize("lengths", [(0.4, 1.0, 0.6, 2.0), (0.5, 1.0, 0.5, 2.0)])
+def test_a_locked_fourbar_is_refused_as_unable_to_move(lengths):
+    """crank + coupler + rocker = ground: the loop only closes stretched flat; it cannot move."""
+    with pytest.raises(ValueError, match="cannot move.*crank, coupler, rocker"):
+        _flat_fourbar(*lengths).build()
+
+
+def test_a_stretched_fivebar_is_a_value_error():
+    lk = bl.Linkage("five")
+    lk.revolute("ground", (0, 0), "a", (0, 0))
+    for x, y in (("a", "b"), ("b", "c"), ("c", "d")):
+        lk.revolute(x, (1, 0), y, (0, 0))
+    lk.revolute("d", (1, 0), "ground", (4, 0))
+    with pytest.raises(ValueError, match="does not move"):
+        lk.build()
+
+
+def test_a_slider_with_every_point_at_the_origin_needs_a_stroke():
+    lk = bl.Linkage("slide")
+    lk.prismatic("ground", (0, 0), "s", (0, 0))
+    with pytest.raises(ValueError, match="stroke"):
+        lk.build()
+    lk = bl.Linkage("slide")
+    lk.prismatic("ground", (0, 0), "s", (0, 0), stroke=(-0.5, 0.5))
+    assert np.allclose(lk.build().q_range, [[-0.5, 0.5]])
+
+
+def test_a_too_large_force_is_reported_in_newtons():
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0, 0), "arm", (0, 0))
+    with pytest.raises(ValueError, match=r"force \(N\) must have coordinates of magnitude <= 1e\+12 N,"):
+        lk.load("arm", (0.0, 1e13))

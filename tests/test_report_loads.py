@@ -46,3 +46,54 @@ def test_cancelling_loads_leave_a_balanced_design_balanced(extra):
     """(Forces of 1e3 N: with 1e10 N the kinematics' round-off, 1e-12 m, is worth 0.01 J, more than the
     verdict's tolerance on the crank's 10 J, and the report rightly does not claim balance.)"""
     assert parallelogram(extra, balanced_crank=True, force=1e3).balance_report().balanced
+
+
+# ---- loads or springs that cancel as a SET (outside attack, B4) ----
+
+def _spring_lever(rel_error, extra=()):
+    """Lever, 2 kg at 0.5 m, ZFL spring arm (0.25, 0) to ground (0, 0.4): k = m g l / (a b) = 98.1 N/m."""
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", 2.0, at=(0.5, 0.0))
+    lk.spring("arm", (0.25, 0.0), "ground", (0.0, 0.4), 2.0 * 9.81 * 0.5 / (0.25 * 0.4) * (1 + rel_error))
+    for force, at in extra:
+        lk.load("arm", force, at=at)
+    return lk.build()
+
+
+# zero resultant and zero moment on the arm: three vertical loads that cancel as a set
+_TRIPLE = [((0.0, -1000.0), (0.0, 0.0)), ((0.0, -1000.0), (1.0, 0.0)), ((0.0, 2000.0), (0.5, 0.0))]
+
+
+def test_a_cancelling_set_of_three_loads_does_not_hide_an_error():
+    assert _spring_lever(0.0, _TRIPLE).balance_report().balanced
+    assert not _spring_lever(1e-7).balance_report().balanced
+    assert not _spring_lever(1e-7, _TRIPLE).balance_report().balanced
+
+
+def test_two_opposing_stiff_springs_do_not_hide_a_small_mass():
+    """Two 1e9 N/m ZFL springs to (0, 0.4) and (0, -0.4) store k (|a|^2 + |b|^2): a constant; the
+    1 mg at 0.5 m is not balanced by anything."""
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", 1e-6, at=(0.5, 0.0))
+    lk.spring("arm", (0.25, 0.0), "ground", (0.0, 0.4), 1e9)
+    lk.spring("arm", (0.25, 0.0), "ground", (0.0, -0.4), 1e9)
+    assert not lk.build().balance_report().balanced
+
+
+def test_balance_never_returns_a_design_its_report_calls_unbalanced():
+    lk = bl.Linkage("2R")
+    lk.revolute("ground", (0, 0), "L1", (0, 0))
+    lk.revolute("L1", (0.5, 0), "L2", (0, 0))
+    lk.mass("L1", 1, at=(0.25, 0))
+    lk.mass("L2", 1, at=(0.25, 0))
+    lk.load("L1", (0, 1e11), at=(0.1, 0))
+    lk.load("L1", (0, -1e11), at=(0.3, 0.05))
+    cands = [(("L1", (0.2, 0)), ("ground", None)), (("L2", (0.2, 0)), ("ground", None)), (("L2", (0.1, 0)), ("L1", None))]
+    try:
+        out = bl.balance(lk.build(), springs=cands)
+    except bl.InfeasibleDesign as err:
+        assert err.verdict in ("not_found", "negative", "box"), str(err)
+    else:
+        assert out.balance_report().balanced

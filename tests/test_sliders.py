@@ -168,3 +168,31 @@ def test_bad_sliders_are_refused_by_name():
     lk.mass("block", 1.0)
     with pytest.raises(ValueError, match="no slide 's_2'"):
         lk.build(driving=["s_2"])
+
+
+def test_a_slide_is_labelled_and_reported_in_metres_not_degrees():
+    """B3: a slide coordinate (m) is never converted to degrees in labels, reports or plots."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from balancelab.core.report import q_units
+    from balancelab.viz.energy import energy_plot
+    from balancelab.viz.frame import angle_label
+
+    d = slider_crank(driving=["s_1"])
+    assert q_units(d) == ("m",)
+    assert q_units(slider_crank()) == ("rad",)
+    label = angle_label(d, 0)
+    assert label.endswith("(m)") and "deg" not in label and "(m) (m)" not in label
+    text = str(d.balance_report())
+    assert "°" not in text and " m)" in text and "per m" in text and "per rad" not in text
+    fig, ax = plt.subplots()
+    try:
+        energy_plot(d, ax=ax)
+        lo, hi = d.q_range[0]
+        x0, x1 = ax.get_xlim()
+        assert x0 == pytest.approx(lo, abs=1e-9 + 1e-6 * (hi - lo)) and x1 == pytest.approx(hi, abs=1e-9 + 1e-6 * (hi - lo))
+        assert "deg" not in ax.get_xlabel()
+    finally:
+        plt.close(fig)

@@ -106,7 +106,7 @@ class Load:
     def __post_init__(self) -> None:
         object.__setattr__(self, "body", body_index("load body", self.body))
         object.__setattr__(self, "point", planar_point("load point", self.point))
-        object.__setattr__(self, "force", planar_point("load force", self.force))
+        object.__setattr__(self, "force", planar_point("load force (N)", self.force, unit="N"))
         if self.kind not in ("weight", "counterweight", "force"):
             raise ValueError(f"load kind must be 'weight', 'counterweight' or 'force', got {self.kind!r}")
 

@@ -27,7 +27,7 @@ import numpy as np
 from .validation import positive_int
 
 __all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "check_tolerance", "reachable_extent", "load_scale"]
+           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
 #: potential energy over the sampled configurations, divided by the load scale.
@@ -68,7 +68,8 @@ class BalanceReport:
     variation : float
         ``(max V - min V) / scale`` over the configurations: 0 for a perfect balance.
     residual : float
-        Largest generalized force ``|dV/dq|`` (J/rad) divided by ``scale`` (1/rad).
+        Largest generalized force ``|dV/dq|`` (J/rad, or N for a slide) divided by ``scale``
+        (1/rad or 1/m).
     scale : float
         Energy scale (J): the sum over every load and spring of the spread of its own
         energy over the configurations. It does not depend on where the origin is.
@@ -87,6 +88,8 @@ class BalanceReport:
         The energy the loads exchange (J), see :func:`load_scale`; at most ``scale``.
     load_variation : float
         ``(max V - min V) / load_scale``: the number the verdict compares with ``tolerance``.
+    q_units : tuple of str
+        Unit of each coordinate (``"rad"`` or ``"m"``), for printing ``worst_q``.
 
     Examples
     --------
@@ -106,15 +109,57 @@ class BalanceReport:
     n: int
     load_scale: float = math.nan
     load_variation: float = math.nan
+    q_units: tuple = ()
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
-        q = ", ".join(f"{np.degrees(v):.1f}°" for v in np.atleast_1d(self.worst_q))
+        units = self.q_units or ("rad",) * len(np.atleast_1d(self.worst_q))
+        q = format_q(units, self.worst_q)
+        per = " or ".join(sorted(set(units), reverse=True))
         return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
                 f"({self.load_scale:.4g} J) over {self.n} configurations; "
-                f"largest residual dV/dq = {self.residual:.2e} × scale per rad at q = ({q}); "
+                f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
+
+
+def q_units(design) -> tuple[str, ...]:
+    """Unit of each configuration coordinate of ``design``: ``"rad"`` (an angle) or ``"m"`` (a slide).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> q_units(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3))
+    ('rad',)
+    """
+    units = getattr(design.kinematics, "units", None)
+    return tuple(units) if units is not None else ("rad",) * design.dof
+
+
+def q_shown(unit: str, value):
+    """A coordinate as shown to a reader: an angle (rad) in degrees, a slide (m) as it is.
+
+    Examples
+    --------
+    >>> float(q_shown("rad", np.pi)), q_shown("m", 0.4)
+    (180.0, 0.4)
+    """
+    return np.degrees(value) if unit == "rad" else value
+
+
+def format_q(units, q, names=None) -> str:
+    """``"22.9°, 0.4 m"``: a configuration in its units (degrees for angles, metres for slides).
+
+    Examples
+    --------
+    >>> format_q(("rad", "m"), [0.4, 0.4])
+    '22.9°, 0.4 m'
+    """
+    out = []
+    for i, (unit, v) in enumerate(zip(units, np.atleast_1d(q))):
+        text = f"{np.degrees(v):.1f}°" if unit == "rad" else f"{v:.4g} m"
+        out.append(f"{names[i]} = {text}" if names else text)
+    return ", ".join(out)
 
 
 def check_tolerance(tolerance) -> float:
@@ -183,17 +228,22 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
+def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
     e.g. a force and its opposite) are added up first, then groups whose energies cancel
-    (equal and opposite forces at two points of a translating body, say); the scale is the
+    (equal and opposite forces at two points of a translating body, say); ``L`` is the
     sum of the spreads ``max - min`` of these groups' energies. Springs do not enter it, so springs that
-    cancel each other cannot inflate it. A design whose loads exchange no energy (a
-    spring-loaded mechanism, or loads that only stand still; below ``1e-12 * scale``)
-    has its springs as the load: the scale is then ``scale``, the sum of the spreads of
-    every element's energy.
+    cancel each other cannot inflate it.
+
+    Loads that form a *set* of zero resultant force and zero moment on one body (three forces, say)
+    do no work in any motion: they are left out first (:func:`_null_sets`). Sets that cancel only
+    through the kinematics (``F, F, -2F`` on three bodies of a parallelogram) cannot be told from a
+    counterweight balancing a mass and still count. A design whose loads exchange no energy
+    (a spring-loaded mechanism, or loads that only stand still; ``L`` below ``roundoff`` and
+    below ``1e-12`` of the loads' largest energy) has its springs as the load: the scale is then ``scale``, the sum
+    of the spreads of every element's energy.
 
     Parameters
     ----------
@@ -204,6 +254,8 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
         Energy of each load (J), as from ``design.element_energies(q)[0]``.
     scale : float
         Sum of the spreads of every load's and spring's energy (J).
+    roundoff : float
+        The round-off of the summed energy (J), see :data:`ROUND_OFF_ALLOWANCE`.
 
     Returns
     -------
@@ -219,7 +271,9 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
     >>> bool(abs(load_scale(d, q, vl, s) - s) < 1e-9 * s)  # counterweights: every load counts
     True
     """
-    loads = design.loads
+    null = _null_sets(design.loads)
+    loads = [ld for i, ld in enumerate(design.loads) if i not in null]
+    load_energies = load_energies[:, [i for i in range(len(design.loads)) if i not in null]]
     total = 0.0
     if loads:
         pts = design.world_points(q, [(ld.body, ld.point) for ld in loads])  # (m, nL, 2)
@@ -232,7 +286,40 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float) -> float:
                     break
         sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
         total = sum(float(np.ptp(e)) for e in _cancel(sums))
-    return total if total > _ROUND_OFF * scale else scale
+    still = _ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0)
+    return total if total > max(still, roundoff) else scale
+
+
+def _null_sets(loads) -> set:
+    """Indices of loads that form, on one body, a set of zero resultant force and zero moment (and
+    zero ``sum p . F``): such a set does no work in any motion of the body, it is no load at all.
+    On each body (up to 12 loads) the largest such subset is taken."""
+    from itertools import combinations
+
+    out: set = set()
+    bodies = sorted({ld.body for ld in loads})
+    for body in bodies:
+        idx = [i for i, ld in enumerate(loads) if ld.body == body]
+        if len(idx) < 2 or len(idx) > 12:
+            continue
+        F = np.array([loads[i].force for i in idx], dtype=float)
+        P = np.array([loads[i].point for i in idx], dtype=float)
+        for size in range(len(idx), 1, -1):
+            found = None
+            for sub in combinations(range(len(idx)), size):
+                f, p = F[list(sub)], P[list(sub)]
+                mag = float(np.abs(f).sum())
+                arm = mag * (float(np.abs(p).max()) + 1e-300)
+                net = np.abs(f.sum(0)).max()
+                moment = abs(float(np.sum(p[:, 0] * f[:, 1] - p[:, 1] * f[:, 0])))
+                dot = abs(float(np.sum(p * f)))
+                if mag > 0 and net <= 1e-12 * mag and moment <= 1e-12 * arm and dot <= 1e-12 * arm:
+                    found = sub
+                    break
+            if found is not None:
+                out.update(idx[k] for k in found)
+                break
+    return out
 
 
 def _cancel(energies: list) -> list:
@@ -275,14 +362,14 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     if scale == 0.0:
         raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
                          "so there is nothing to balance")
-    yardstick = load_scale(design, q, vl, scale)
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
+    yardstick = load_scale(design, q, vl, scale, roundoff)
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
                          balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
-                         load_scale=yardstick, load_variation=spread / yardstick)
+                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design))

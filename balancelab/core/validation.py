@@ -43,27 +43,36 @@ def finite_real(name: str, value, *, positive: bool = False, nonnegative: bool =
     return value
 
 
-def planar_point(name: str, value) -> tuple[float, float]:
-    """Return a planar point as a tuple of two floats, or raise naming ``name``."""
+def planar_point(name: str, value, unit: str = "m") -> tuple[float, float]:
+    """Return a planar point (or a planar vector of ``unit``, e.g. a force in N) as a tuple of two
+    floats, or raise naming ``name``.
+
+    Examples
+    --------
+    >>> planar_point("force (N)", (0.0, 2e12), unit="N")
+    Traceback (most recent call last):
+    ...
+    ValueError: force (N) must have coordinates of magnitude <= 1e+12 N, got (0, 2e+12)
+    """
     if isinstance(value, (str, bytes)) or value is None or isinstance(value, dict):
-        raise TypeError(f"{name} must be a pair of numbers (x, y) in metres, got {value!r}")
+        raise TypeError(f"{name} must be a pair of numbers (x, y) in {'metres' if unit == 'm' else unit}, got {value!r}")
     try:
         arr = np.asarray(value)
     except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a pair of numbers (x, y) in metres, got {value!r}") from None
+        raise TypeError(f"{name} must be a pair of numbers (x, y) in {'metres' if unit == 'm' else unit}, got {value!r}") from None
     if arr.dtype.kind not in "iuf" or arr.dtype == bool:
         if arr.ndim == 1 and all(isinstance(v, (Real, np.floating, np.integer)) and not isinstance(v, bool)
                                  for v in arr.tolist()):
             arr = arr.astype(float)
         else:
-            raise TypeError(f"{name} must be a pair of numbers (x, y) in metres, got {value!r}")
+            raise TypeError(f"{name} must be a pair of numbers (x, y) in {'metres' if unit == 'm' else unit}, got {value!r}")
     arr = arr.astype(float)
     if arr.shape != (2,):
         raise ValueError(f"{name} must have exactly two coordinates (x, y), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite, got {tuple(arr)}")
     if np.abs(arr).max() > MAX_MAGNITUDE:
-        raise ValueError(f"{name} must have coordinates of magnitude <= {MAX_MAGNITUDE:g} m, got {tuple(arr)}")
+        raise ValueError(f"{name} must have coordinates of magnitude <= {MAX_MAGNITUDE:g} {unit}, got ({arr[0]:g}, {arr[1]:g})")
     return (float(arr[0]), float(arr[1]))
 
 

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ..core.design import Design
+from ..core.report import format_q, q_shown, q_units
 from ..core.validation import finite_real
 from .style import FONT, fit_title
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
@@ -65,9 +66,11 @@ def report_summary(report) -> str:
         raise TypeError(f"report must be a BalanceReport (design.balance_report()), got {type(report).__name__}")
     if report.balanced:
         return f"balanced (energy constant to {report.variation:.1e} of its scale)"
-    q = ", ".join(f"{np.degrees(v):.0f}°" for v in np.atleast_1d(report.worst_q))
+    units = getattr(report, "q_units", ()) or ("rad",) * len(np.atleast_1d(report.worst_q))
+    q = format_q(units, report.worst_q)
+    per = "J/rad" if set(units) == {"rad"} else "N" if set(units) == {"m"} else "J/rad or N"
     return (f"NOT balanced: energy varies by {report.variation:.2g} of its scale; "
-            f"largest |dV/dq| = {report.residual * report.scale:.3g} J/rad at ({q})")
+            f"largest |dV/dq| = {report.residual * report.scale:.3g} {per} at ({q})")
 
 
 _GREEK = {"theta": "θ", "phi": "φ", "psi": "ψ", "alpha": "α", "beta": "β", "gamma": "γ"}
@@ -93,7 +96,10 @@ def _j(x: float, scale: float) -> str:
 
 
 def _span(design: Design, grid: np.ndarray, i: int) -> str:
-    lo, hi = np.degrees(grid[0, i]), np.degrees(grid[-1, i])
+    unit = q_units(design)[i]
+    lo, hi = q_shown(unit, grid[0, i]), q_shown(unit, grid[-1, i])
+    if unit == "m":
+        return f"{q_symbol(design, i)} from {lo:.3g} m to {hi:.3g} m"
     return f"{q_symbol(design, i)} from {lo:.0f}° to {hi:.0f}°"
 
 
@@ -135,11 +141,12 @@ def describe_energy(design: Design, report, grid, total, load, spring) -> str:
     if report.balanced:
         trade = (" while " + " and ".join(parts) + (" trade" if len(parts) == 2 else " varies")) if parts else ""
         return f"the total energy is flat at {_j(float(np.mean(t)), sc)} J over {where}{trade}"
-    wq = np.degrees(np.atleast_1d(report.worst_q))
-    at = ", ".join(f"{q_symbol(design, i)} = {v:.0f}°" for i, v in enumerate(wq))
+    units = q_units(design)
+    at = format_q(units, report.worst_q, [q_symbol(design, i) for i in range(design.dof)])
+    per = "J/rad" if set(units) == {"rad"} else "N" if set(units) == {"m"} else "J/rad or N"
     return (f"the total energy is not flat: it varies from {_j(t.min(), sc)} to {_j(t.max(), sc)} J over {where} "
             f"({report.variation:.2g} of the energy scale); the largest residual |dV/dq| is "
-            f"{report.residual * report.scale:.3g} J/rad at {at}")
+            f"{report.residual * report.scale:.3g} {per} at {at}")
 
 
 def _safe_report(design: Design, n: int = 1000):
@@ -262,7 +269,8 @@ class EnergyView:
 
     def _init_map(self, design: Design, residual_ax) -> None:
         ax = self.ax
-        (x0, x1), (y0, y1) = np.degrees(design.q_range)
+        u = q_units(design)
+        (x0, x1), (y0, y1) = q_shown(u[0], design.q_range[0]), q_shown(u[1], design.q_range[1])
         extent = (x0, x1, y0, y1)
         self.image = ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto", cmap="cividis",
                                extent=extent, interpolation="nearest")
@@ -330,7 +338,7 @@ class EnergyView:
 
     def _show_curves(self) -> None:
         rep = self.report
-        x = 100 * self.t if self.path else np.degrees(self.grid[:, 0])
+        x = 100 * self.t if self.path else q_shown(q_units(self.design)[0], self.grid[:, 0])
         self.lines["load"].set_data(x, self.load)
         self.lines["spring"].set_data(x, self.spring)
         self.lines["total"].set_data(x, self.total)
@@ -371,13 +379,15 @@ class EnergyView:
         else:
             wq = np.atleast_1d(rep.worst_q)
             verdict = (f"not balanced: total varies by {rep.variation:.2g} of the scale\n"
-                       f"largest |dV/dq| = {rep.residual * rep.scale:.3g} J/rad (×)")
+                       f"largest |dV/dq| = {rep.residual * rep.scale:.3g} "
+                       f"{'N' if set(q_units(d)) == {'m'} else 'J/rad' if set(q_units(d)) == {'rad'} else 'J/rad or N'} (×)")
             if self.path:  # the worst configuration need not lie on the path: it is written, not marked
                 self.worst.set_data([], [])
             elif d.dof == 1:
-                self.worst.set_data([np.degrees(wq[0])], [float(d.potential_energy(wq).total)])
+                self.worst.set_data([q_shown(q_units(d)[0], wq[0])], [float(d.potential_energy(wq).total)])
             else:
-                self.worst.set_data([np.degrees(wq[0])], [np.degrees(wq[1])])
+                u = q_units(d)
+                self.worst.set_data([q_shown(u[0], wq[0])], [q_shown(u[1], wq[1])])
         self.note.set_text(verdict)   # shown in the legend's title when there is a legend
         if self.legend is not None:
             self.legend.set_title(verdict)
@@ -420,9 +430,10 @@ class EnergyView:
             self.marker.set_data([100 * self.t[k]], [float(self.total[k])])
         elif self.design.dof == 1:
             v = float(self.design.potential_energy(q).total)
-            self.marker.set_data([np.degrees(q[0])], [v])
+            self.marker.set_data([q_shown(q_units(self.design)[0], q[0])], [v])
         else:
-            self.marker.set_data([np.degrees(q[0])], [np.degrees(q[1])])
+            u = q_units(self.design)
+            self.marker.set_data([q_shown(u[0], q[0])], [q_shown(u[1], q[1])])
 
 
 def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residual: bool | None = None,

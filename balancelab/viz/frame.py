@@ -20,6 +20,7 @@ from typing import Callable
 import numpy as np
 
 from ..core.design import Design
+from ..core.report import q_units
 
 __all__ = ["PALETTE", "STYLE", "Blitter", "angle_label", "as_config", "check_design", "count", "default_q",
            "new_axes", "range_grid", "tex_label"]
@@ -275,8 +276,10 @@ def angle_label(design: Design, i: int = 0) -> str:
     >>> print(angle_label(bl.catalog()["singh_fourbar"]()))
     $\\theta$, crank angle from the x-axis (deg)
     """
+    unit = "deg" if q_units(design)[i] == "rad" else "m"
     words = design.kinematics.describe()[i]
-    return f"{tex_label(design.q_names[i])}, {words} (deg)" if words else f"{tex_label(design.q_names[i])} (deg)"
+    words = words[: -len(f" ({unit})")] if words.endswith(f" ({unit})") else words
+    return f"{tex_label(design.q_names[i])}, {words} ({unit})" if words else f"{tex_label(design.q_names[i])} ({unit})"
 
 
 class Blitter:

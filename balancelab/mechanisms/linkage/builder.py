@@ -196,11 +196,14 @@ class Linkage:
         (5.0, 0.0)
         """
         b = self._index(body, "body")
-        self._loads.append(Load(b, planar_point("at (m)", at), planar_point("force (N)", force), name=name))
+        self._loads.append(Load(b, planar_point("at (m)", at), planar_point("force (N)", force, unit="N"), name=name))
 
     def spring(self, body_a: BodyRef, point_a, body_b: BodyRef, point_b, k: float,
                free_length: float = 0.0, name: str = "") -> None:
         """A linear spring of rate ``k`` (N/m) and ``free_length`` (m; 0 is a ZFL spring) between two points.
+
+        A negative ``free_length`` is allowed: it models a built spring that acts as a ZFL spring
+        in parallel with a pretension (see :class:`balancelab.Spring` and the realizations).
 
         Examples
         --------
@@ -282,7 +285,38 @@ class Linkage:
         drive = None if driving is None else [self._variable(b, "driving") for b in driving]
         start = None if guess is None else {self._variable(b, "guess"): finite_real(f"guess[{b!r}] (rad or m)", a)
                                             for b, a in dict(guess).items()}
+        pts = [v for j in self._joints for p in (j.point_i, j.point_j) for v in p]
+        pts += [v for sl in self._sliders for p in (sl.point_a, sl.point_b) for v in p]
+        if any(st is None for st in self._strokes) and not any(abs(v) > 0 for v in pts):
+            raise ValueError(f"{self.name}: every joint point is at the origin, so a slider has no default stroke "
+                             "(twice the largest coordinate either way): pass stroke=(lo, hi) (m) to prismatic()")
         kin = LinkageKinematics(len(self._bodies), self._joints, drive, start, self._bodies, self._sliders,
                                 self._strokes)
-        return Design(self.name if name is None else name, self._bodies, self._joints, kin, self._loads,
-                      self._springs, labels=self._labels, reference="balancelab.Linkage (numeric kinematics)")
+        title = self.name if name is None else name
+        try:
+            design = Design(title, self._bodies, self._joints, kin, self._loads, self._springs, labels=self._labels,
+                            reference="balancelab.Linkage (numeric kinematics)")
+        except RuntimeError as err:
+            raise ValueError(f"{title}: the linkage does not move from where it is assembled ({err}); a loop is "
+                             "probably stretched straight (its links exactly span the ground): change the joint "
+                             "points") from None
+        self._check_moves(design, kin)
+        return design
+
+    def _check_moves(self, design: Design, kin) -> None:
+        """ValueError when the assembled linkage cannot move (a coordinate's range is round-off) or
+        has no reachable configurations to sample."""
+        span = np.ptp(np.asarray(kin.q_range, dtype=float), axis=-1)
+        units = kin.scale[list(kin.driving)]
+        for name, width, unit in zip(kin.names, span, units):
+            if not width > 1e-3 * unit:  # a locked loop closes to round-off over ~1e-5 rad
+                raise ValueError(
+                    f"{design.name}: the linkage cannot move: {name} can only move by {width:.3g} "
+                    f"{'rad' if unit == 1.0 else 'm'}; its links {', '.join(self._bodies[1:])} are locked by their "
+                    f"joints (e.g. link lengths that only close the loop when drawn flat, a loop stretched straight); "
+                    "change the joint points")
+        try:
+            design.sample(20, seed=0)
+        except RuntimeError as err:
+            raise ValueError(f"{design.name}: the linkage does not move from where it is assembled ({err}); "
+                             "a loop is probably stretched straight: change the joint points") from None

@@ -122,6 +122,11 @@ class LinkageKinematics(Kinematics):
         """``theta_<body>`` for a body angle, ``s_<k>`` (k from 1) for the slide of the k-th prismatic joint."""
         return f"theta_{v}" if v < self.nbodies else f"s_{v - self.nbodies + 1}"
 
+    @property
+    def units(self) -> tuple[str, ...]:
+        """Unit of each coordinate: ``"rad"`` for a body angle, ``"m"`` for a slide."""
+        return tuple("rad" if v < self.nbodies else "m" for v in self.driving)
+
     def _describe(self, v: int) -> str:
         if v < self.nbodies:
             return f"angle of {self.body_names[v]} from the x-axis"

@@ -15,13 +15,11 @@ from ...core.elements import Load, Spring, G
 from ...core.validation import planar_point, positive_int
 from ..lustig.solving import InfeasibleDesign
 from .problem import Block, columns
+from .bilinear import search
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
-from .verdicts import infeasible
 
 __all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
 
-_ROUNDS = 8  # alternations for springs whose two ends are both free
-_STARTS = 6  # starting points tried for them
 _CONTROLLER = None  # threadpoolctl's view of the loaded BLAS libraries, made on first use
 
 
@@ -104,70 +102,14 @@ def _default_point(design: Design, body: int, size: float, index: int = 0, start
     return (x + r * np.cos(angle), y + r * np.sin(angle))
 
 
-def _objective_value(p, x: np.ndarray, objective: str) -> float:
-    val = 0.0
-    for b in p.blocks:
-        k = x[b.cols[0]]
-        if objective == "min_stiffness" and b.kind == "spring" or objective == "min_mass" and b.kind == "mass":
-            val += k
-        elif objective == "min_preload" and b.kind == "spring":
-            val += p.mean[b.cols] @ x[b.cols] + (0.5 * (x[b.cols[1]] ** 2 + x[b.cols[2]] ** 2) / k
-                                                 if b.free is not None and k > 0 else 0.0)
-    return float(val)
-
-
-def _rounds(design, blocks, both, q, objective):
-    """Alternate which end of the both-free springs is free (each round keeps balance); the best round."""
-    best = None
-    for _ in range(_ROUNDS):
-        p = columns(design, blocks, q)
-        sol = solve(p, objective, maxiter=60)  # each round is a step of a heuristic: a short convex step
-        value = _objective_value(p, sol.x, objective)
-        if best is not None and value >= best[0] * (1 - 1e-9):
-            break
-        best = (value, p, sol, [list(b.ends) for b in blocks], [b.free for b in blocks])
-        for b in both:  # fix the end just found, free the other
-            k, mx, my = sol.x[b.cols]
-            if k > 0:
-                b.ends[b.free] = (b.ends[b.free][0], (mx / k, my / k))
-                b.free = 1 - b.free
-                b.ends[b.free] = (b.ends[b.free][0], None)
-    _, p, sol, ends, frees = best
-    for b, e, f in zip(blocks, ends, frees):
-        b.ends, b.free = e, f
-    return p, sol
-
-
 def _solve_alternating(design, blocks, q, objective):
-    """Solve; springs with two free ends are bilinear: from each of :data:`_STARTS` starts (start 0:
-    every second end at :func:`_default_point`; then, alternately the first and the second end fixed
-    at points distinct for every candidate) the free end alternates (:func:`_rounds`); the first
-    start that balances is kept. If none does, the lifted problem (the products ``k p_a p_b`` as
-    unknowns of their own, :func:`.problem.columns` with ``free == "both"``) decides whether the
-    candidates are impossible for any rates; otherwise the last start's verdict is reported."""
+    """Solve; springs with two free ends are bilinear: searched from many starts, the best kept
+    (:func:`.bilinear.search`, which also gives the honest verdict when none balances)."""
     both = [b for b in blocks if b.kind == "spring" and b.ends[0][1] is None and b.ends[1][1] is None]
     if not both:
         p = columns(design, blocks, q)
         return p, solve(p, objective)
-    size = _size(design)
-    last = None
-    for start in range(_STARTS):
-        fixed = 1 if start % 2 == 0 else 0  # even starts fix the second end first, odd ones the first
-        for i, b in enumerate(both):
-            body = b.ends[fixed][0]
-            b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
-            b.ends[fixed] = (body, _default_point(design, body, size, i, start))
-            b.free = 1 - fixed
-        try:
-            return _rounds(design, blocks, both, q, objective)
-        except InfeasibleDesign as err:
-            last = err
-    for b in both:
-        b.ends, b.free = [(b.ends[0][0], None), (b.ends[1][0], None)], "both"
-    lifted = columns(design, blocks, q)
-    if infeasible(lifted, column_norms(lifted), objective).verdict == "impossible":
-        raise infeasible(lifted, column_norms(lifted), objective, "; springs with both ends free, lifted")
-    raise last
+    return search(design, blocks, both, q, objective, _default_point, _size(design))
 
 
 def _active(b, point, names) -> dict:
@@ -259,7 +201,11 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     objective : {"min_preload", "min_stiffness", "min_mass"}
         Which balanced solution to pick when there are free choices: the least spring
         energy (Singh's minimum preload: the constant total energy as low as it goes), the
-        smallest total stiffness (N/m), or the smallest total counter mass (kg).
+        smallest total stiffness (N/m), or the smallest total counter mass (kg). Ties: an
+        objective ignores the candidates it does not count (counterweights for the stiffness,
+        springs for the mass); when other designs reach the same value a UserWarning says so,
+        and the design returned is simply the linear program's optimal vertex (HiGHS), picked
+        by no further rule.
     box : ((x_lo, x_hi), (y_lo, y_hi)), optional
         Where free points may go, in their bodies' local frames (m); by default a square
         of half-width the linkage's largest joint or load coordinate.
@@ -326,16 +272,17 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
 
 
 def _verify(design: Design, q: np.ndarray) -> None:
-    """The verdict of :meth:`Design.balance_report` on fresh configurations ``q`` (its energy
-    criterion, without the generalized forces), or InfeasibleDesign."""
-    vl, vs = design.element_energies(q)
-    spread = float(np.ptp(vl.sum(-1) + vs.sum(-1)))
-    loads = float(np.ptp(vl, axis=0).sum()) if vl.size else 0.0
-    scale = loads if loads > 1e-12 * spread else float(np.ptp(vs, axis=0).sum())
-    if not spread <= 1e-9 * scale:
-        raise InfeasibleDesign(f"{design.name}: the solution found leaves the energy varying by {spread:.3g} J "
-                               f"over fresh configurations (of {scale:.3g} J); the sample missed part of the "
-                               "range: try a larger n")
+    """The verdict of :meth:`Design.balance_report` (its default configurations, and the fresh ones
+    ``q``): a design its own report calls unbalanced is never returned (InfeasibleDesign instead,
+    verdict ``"not_found"``: the solution found does not pass the report, e.g. at round-off)."""
+    for r in (design.balance_report(), design.balance_report(q)):
+        if not r.balanced:
+            err = InfeasibleDesign(f"{design.name}: the solution found does not pass its own balance report: the "
+                                   f"energy varies by {r.load_variation:.3g} of the loads' {r.load_scale:.3g} J "
+                                   f"over {r.n} configurations (round-off of large or cancelling terms, or a "
+                                   "sample that missed part of the range: try a larger n); no design is returned")
+            err.verdict, err.box = "not_found", None
+            raise err
 
 
 def free_choices(design: Design, springs: Sequence = (), counterweights: Sequence = (), *, n: int | None = None

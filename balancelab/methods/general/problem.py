@@ -152,13 +152,15 @@ def columns(design, blocks, q) -> Problem:
     return Problem(A - A.mean(0), v - v.mean(), np.array(mean), blocks, q, poses, spread, design)
 
 
-def harmonics(design, poses, residual, top: int = 4) -> list[tuple[str, float]]:
+def harmonics(design, poses, residual, top: int = 4, q=None) -> list[tuple[str, float]]:
     """The largest trigonometric terms of an energy ``residual`` (J) sampled at ``poses``.
 
     Fits ``residual`` with ``cos theta_b``, ``sin theta_b`` and ``cos``/``sin`` of the
     differences of the body angles (every ZFL spring and weight energy is a combination
     of these) and returns the ``top`` terms with the largest amplitude, as
     ``(term, coefficient in J)``; for a linkage with loops the fit is the least-norm one.
+    With the configurations ``q`` of a design with slides (coordinates in m), the terms also
+    hold the slides ``s_k``, ``s_k^2`` and ``s_k cos theta_b``, ``s_k sin theta_b`` (J per m, m^2).
 
     Examples
     --------
@@ -179,6 +181,24 @@ def harmonics(design, poses, residual, top: int = 4) -> list[tuple[str, float]]:
         for c in range(b + 1, nb):
             feats += [np.cos(th[:, c] - th[:, b]), np.sin(th[:, c] - th[:, b])]
             names += [f"cos(θ_{c} - θ_{b})", f"sin(θ_{c} - θ_{b})"]
+    units = getattr(design.kinematics, "units", ())
+    for i, unit in enumerate(units if q is not None else ()):
+        if unit != "m":
+            continue
+        sv, sname = np.asarray(q)[:, i], design.q_names[i]
+        feats += [sv, sv * sv]
+        names += [sname, f"{sname}²"]
+        for b in range(1, nb):
+            if np.ptp(th[:, b]) > 1e-9:  # bodies that never turn have no harmonics
+                feats += [sv * np.cos(th[:, b]), sv * np.sin(th[:, b])]
+                names += [f"{sname} cos θ_{b}", f"{sname} sin θ_{b}"]
+    keep = []  # constant features name nothing; a feature equal to an earlier one (bodies turning alike) once
+    for i, f in enumerate(feats):
+        if np.ptp(f) > 1e-12 and not any(np.allclose(f, feats[j], atol=1e-9) for j in keep):
+            keep.append(i)
+    feats, names = [feats[i] for i in keep], [names[i] for i in keep]
+    if not feats:
+        return []
     F = np.stack(feats, -1)
     F = F - F.mean(0)
     coef = np.linalg.lstsq(F, residual - residual.mean(), rcond=1e-10)[0]

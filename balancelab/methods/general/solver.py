@@ -271,6 +271,8 @@ def _unique(p: Problem, cost: np.ndarray, lp, A_ub, b_ub, eq, bounds) -> bool:
     lims = np.append(b_ub, lp.fun + slack) if b_ub is not None else np.array([lp.fun + slack])
     ends = [linprog(sgn * direction, A_ub=rows, b_ub=lims, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
             for sgn in (1.0, -1.0)]
+    if any(e.status == 3 for e in ends):  # unbounded along the face: a whole ray of designs of that value
+        return False
     if any(e.status != 0 for e in ends):
         return True
     return bool(abs(direction @ (ends[0].x - ends[1].x)) <= 1e-6 * max(np.abs(direction @ lp.x), 1e-3))

@@ -27,7 +27,7 @@ from .problem import Problem, harmonics
 __all__ = ["VERDICTS", "infeasible", "nice_box"]
 
 #: the three reasons a balance problem has no admissible solution
-VERDICTS = ("impossible", "negative", "box")
+VERDICTS = ("impossible", "negative", "box", "not_found")
 
 _TERM_TOL = 1e-9  # energy terms below this fraction of the loads' exchanged energy are round-off
 
@@ -61,7 +61,7 @@ def nice_box(half: float) -> tuple:
 def terms(p: Problem, residual: np.ndarray) -> str:
     """``"0.98 J × cos θ_1, ..."``: the energy terms of a residual above the scale-relative tolerance."""
     tol = _TERM_TOL * max(p.load_spread, 1e-300)
-    found = [(n, v) for n, v in harmonics(p.design, p.poses, residual) if abs(v) > tol]
+    found = [(n, v) for n, v in harmonics(p.design, p.poses, residual, q=p.q) if abs(v) > tol]
     return ", ".join(f"{v:.3g} J × {name}" for name, v in found) or f"{np.ptp(residual):.3g} J in all"
 
 
@@ -70,6 +70,22 @@ def _rates(p: Problem) -> np.ndarray:
     for b in p.blocks:
         lo[b.cols[0]] = 0.0
     return lo
+
+
+def _signed(p: Problem, D: np.ndarray, lo: np.ndarray) -> np.ndarray:
+    """Least squares with rates and masses >= 0 (scipy's trust-region solver can meet 0 * inf on a
+    rank-deficient problem: its RuntimeWarning is silenced and the bounded-variable solver used then)."""
+    import warnings
+
+    from scipy.optimize import lsq_linear
+
+    bounds = (lo, np.full(p.nvar, np.inf))
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore", RuntimeWarning)
+        x = lsq_linear(p.A / D, -p.v, bounds=bounds).x
+        if not np.all(np.isfinite(x)):
+            x = lsq_linear(p.A / D, -p.v, bounds=bounds, method="bvls").x
+    return x / D
 
 
 def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> InfeasibleDesign:
@@ -88,8 +104,6 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     --------
     Used by :func:`balancelab.balance`; the tests raise each verdict.
     """
-    from scipy.optimize import lsq_linear
-
     head = f"no balanced design from these candidates (objective {objective!r}{detail}): "
     tol = 1e-10 * max(p.load_spread, 1e-300)
     free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] / D
@@ -115,7 +129,7 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
         where = ", ".join(outside) or "the free points at the box's edge"
         return _error("box", head + f"needs a point outside the box {p.blocks[0].box}: {where}; "
                       f"box={box} would do", box)
-    signed = lsq_linear(p.A / D, -p.v, bounds=(lo, np.full(p.nvar, np.inf))).x / D
+    signed = _signed(p, D, lo)
     big = max(np.abs(free).max(), 1e-300)
     need = [label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
     who = ", ".join(need) if need else "some of the candidates"

@@ -1,0 +1,177 @@
+"""Springs with both ends free: a bilinear problem, searched from many starts, judged honestly.
+
+With both ends of a ZFL spring free, its energy holds the products ``k p_a p_b``: not linear in
+any choice of unknowns. The search fixes one end, solves the linear problem for the other (a
+*round*), then fixes that one and frees the first, and so on (:func:`rounds`); it does so from
+many starts (:func:`start_points`): the defaults of :func:`balancer._default_point`, the corners,
+edge midpoints and centre of the box for either end, and the ends recovered from the *lifted*
+problem (the moments ``k p_a``, ``k p_b`` and ``k p_a p_b^T`` as unknowns of their own: linear).
+Every start is tried and the best objective value is kept (not the first that balances).
+
+The verdicts are honest: "impossible" only when the lifted problem (a relaxation: any design
+is a solution of it) has no solution even with rates of any sign; otherwise, when no start
+balances, the verdict is ``"not_found"``: a solution may exist, the search did not find it.
+Layer: methods.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..lustig.solving import InfeasibleDesign
+from .problem import columns
+from .solver import column_norms, lp_constraints, rank_of, solve
+from .verdicts import infeasible
+
+__all__ = ["search", "start_points", "lifted_ends"]
+
+#: alternations per start
+ROUNDS = 8
+#: box points tried as a start for the fixed end: corners, edge midpoints, centre (fractions of the half-width)
+_GRID = ((1, 1), (-1, -1), (-1, 1), (1, -1), (0, 1), (0, -1), (1, 0), (-1, 0), (0, 0))
+
+
+def objective_value(p, x: np.ndarray, objective: str) -> float:
+    """The objective of a solution ``x`` of ``p`` (N/m, kg or J)."""
+    val = 0.0
+    for b in p.blocks:
+        k = x[b.cols[0]]
+        if objective == "min_stiffness" and b.kind == "spring" or objective == "min_mass" and b.kind == "mass":
+            val += k
+        elif objective == "min_preload" and b.kind == "spring":
+            val += p.mean[b.cols] @ x[b.cols] + (0.5 * (x[b.cols[1]] ** 2 + x[b.cols[2]] ** 2) / k
+                                                 if b.free is not None and k > 0 else 0.0)
+    return float(val)
+
+
+def rounds(design, blocks, both, q, objective):
+    """Alternate which end of the both-free springs is free (each round keeps balance): the best
+    round ``(value, p, sol)``; the blocks are left as in that round. Raises InfeasibleDesign when
+    the first round does not balance."""
+    best = None
+    for _ in range(ROUNDS):
+        p = columns(design, blocks, q)
+        try:
+            sol = solve(p, objective, maxiter=60)  # each round is a step of a heuristic: a short convex step
+        except InfeasibleDesign:
+            if best is None:
+                raise
+            break
+        value = objective_value(p, sol.x, objective)
+        if best is not None and value >= best[0] * (1 - 1e-9):
+            break
+        best = (value, p, sol, [list(b.ends) for b in blocks], [b.free for b in blocks])
+        for b in both:  # fix the end just found, free the other
+            k, mx, my = sol.x[b.cols]
+            if k > 0:
+                b.ends[b.free] = (b.ends[b.free][0], (mx / k, my / k))
+                b.free = 1 - b.free
+                b.ends[b.free] = (b.ends[b.free][0], None)
+    value, p, sol, ends, frees = best
+    for b, e, f in zip(blocks, ends, frees):
+        b.ends, b.free = e, f
+    return value, p, sol
+
+
+def _lift(blocks, both):
+    saved = [(list(b.ends), b.free) for b in blocks]
+    for b in both:
+        b.ends, b.free = [(b.ends[0][0], None), (b.ends[1][0], None)], "both"
+    return saved
+
+
+def _restore(blocks, saved):
+    for b, (e, f) in zip(blocks, saved):
+        b.ends, b.free = e, f
+
+
+def lifted_ends(design, blocks, both, q) -> list:
+    """Ends ``[(p_a, p_b) or None per both-free spring]`` recovered from the lifted linear program
+    (rates >= 0, ``p_a`` in the box): ``p_a = (k p_a) / k``, ``p_b = (k p_b) / k``."""
+    from scipy.optimize import linprog
+
+    saved = _lift(blocks, both)
+    try:
+        p = columns(design, blocks, q)
+        D = column_norms(p)
+        r, U, s, Vt = rank_of(p.A / D)
+        sigma = max(np.linalg.norm(p.v), 1e-300)
+        S = sigma / D
+        bounds, A_ub, b_ub = lp_constraints(p, S)
+        c = np.zeros(p.nvar)
+        for b in p.blocks:
+            c[b.cols[0]] = 1.0 if b.kind == "spring" else 0.0
+        lp = linprog(c * S, A_ub=A_ub, b_ub=b_ub, A_eq=Vt[:r], b_eq=-(U[:, :r].T @ p.v) / s[:r] / sigma,
+                     bounds=bounds, method="highs")
+        if lp.status != 0:
+            return [None] * len(both)
+        x = lp.x * S
+        out = []
+        for b in both:
+            k = x[b.cols[0]]
+            out.append((tuple(x[b.cols[1:3]] / k), tuple(x[b.cols[3:5]] / k)) if k > 0 else None)
+        return out
+    finally:
+        _restore(blocks, saved)
+
+
+def start_points(design, blocks, both, q, default_point, size: float):
+    """Starts ``[(fixed end index, [point for each both-free spring])]``: the defaults, the lifted
+    problem's ends (each end in turn), then the box's corners, edge midpoints and centre."""
+    starts = []
+    for start in range(6):
+        fixed = 1 if start % 2 == 0 else 0
+        starts.append((fixed, [default_point(design, b.ends[fixed][0], size, i, start) for i, b in enumerate(both)]))
+    lifted = lifted_ends(design, blocks, both, q)
+    for fixed in (0, 1):
+        if all(e is not None for e in lifted):
+            starts.append((fixed, [_clip(e[fixed], b.box) for e, b in zip(lifted, both)]))
+    for fx, fy in _GRID:
+        for fixed in (0, 1):
+            pts = []
+            for b in both:
+                (xl, xh), (yl, yh) = b.box
+                pts.append(((xl + xh) / 2 + fx * (xh - xl) / 2, (yl + yh) / 2 + fy * (yh - yl) / 2))
+            starts.append((fixed, pts))
+    return starts
+
+
+def _clip(point, box):
+    (xl, xh), (yl, yh) = box
+    return (float(np.clip(point[0], xl, xh)), float(np.clip(point[1], yl, yh)))
+
+
+def search(design, blocks, both, q, objective, default_point, size: float):
+    """The best balanced design over every start ``(p, sol)``; InfeasibleDesign with verdict
+    "impossible" (proved by the lifted relaxation) or "not_found" (the search found none)."""
+    best, last = None, None
+    for fixed, pts in start_points(design, blocks, both, q, default_point, size):
+        for b, pt in zip(both, pts):
+            b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
+            b.ends[fixed] = (b.ends[fixed][0], pt)
+            b.free = 1 - fixed
+        try:
+            value, p, sol = rounds(design, blocks, both, q, objective)
+        except InfeasibleDesign as err:
+            last = err
+            continue
+        if best is None or value < best[0] * (1 - 1e-9):
+            best = (value, p, sol, [(list(b.ends), b.free) for b in blocks])
+    if best is not None:
+        _restore(blocks, best[3])
+        return best[1], best[2]
+    saved = _lift(blocks, both)
+    lifted = columns(design, blocks, q)
+    err = infeasible(lifted, column_norms(lifted), objective, "; springs with both ends free, lifted")
+    _restore(blocks, saved)
+    if err.verdict == "impossible":
+        raise err
+    if err.verdict == "box" and last is not None and getattr(last, "verdict", None) == "box":
+        raise last
+    out = InfeasibleDesign(
+        f"no balanced design found from these candidates (objective {objective!r}): the search over "
+        f"{len(start_points(design, blocks, both, q, default_point, size))} starts for the springs with both ends "
+        "free found none, but this is NOT proved impossible: the linear relaxation (the moments k p_a, k p_b, "
+        f"k p_a p_b^T as unknowns) has a solution ({err.verdict!r}: {err}); try fixing one end of a spring at a "
+        "point you choose, or a wider box")
+    out.verdict, out.box = "not_found", getattr(err, "box", None)
+    raise out
