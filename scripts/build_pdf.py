@@ -92,6 +92,13 @@ FIT_AND_REPORT_JS = """
   const main = document.querySelector("main") || document.body;
   const width = main.getBoundingClientRect().width;
   const left = main.getBoundingClientRect().left, right = left + width;
+  // a heading stays on one line (scaled down when long): Chromium drops the space at a line
+  // break from the heading's bookmark ("andcounterweights")
+  for (const h of document.querySelectorAll('h1, h2, h3, h4')) {
+    h.style.whiteSpace = "nowrap";
+    const w = h.getBoundingClientRect().width;
+    if (h.scrollWidth > w) { h.style.zoom = (w / h.scrollWidth).toFixed(3); }
+  }
   for (const e of document.querySelectorAll('mjx-container, table')) {
     const r = e.getBoundingClientRect(), w = Math.max(e.scrollWidth, r.width);
     if (r.left + w > right) { e.style.zoom = ((right - r.left) / w).toFixed(3); }

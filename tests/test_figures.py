@@ -263,7 +263,8 @@ def test_figure_html_records_the_check_and_fixes_a_label_below_the_canvas():
     assert 'data-text-clashes="&#x27;one&#x27; × &#x27;two&#x27;"' in style.figure_html(crowded)
 
 
-@pytest.mark.parametrize("name", ["fourbar_two_springs", "deepak_technique2_A", "pulley_lever", "singh_fourbar"])
+@pytest.mark.parametrize("name", ["fourbar_two_springs", "deepak_technique2_A", "deepak_technique3_AB", "pulley_lever",
+                                  "singh_fourbar"])
 def test_library_figures_have_no_clashing_texts(name):
     """Titles wrap to their Axes, the verdict sits in the legend (never on a curve or under the
     legend), and every text lies inside the canvas, for drawings, energy plots and animations."""

@@ -121,8 +121,9 @@ def arrange_labels(labels: dict, points: dict, texts: dict, obstacles=(), previo
     """Place point labels so that they avoid each other; points that coincide share one label.
 
     Of eight directions around its point, a label takes the one whose estimated text box is
-    farthest from the other labelled points, the ``obstacles`` and the labels already placed;
-    its ``previous`` direction wins a near tie, so labels do not jump between animation frames.
+    farthest from the other labelled points, the ``obstacles`` and the labels already placed,
+    among those whose box stays inside the Axes (else the least outside); its ``previous``
+    direction wins a near tie, so labels do not jump between animation frames.
     Distances are measured on the page (points), not in data units.
 
     Parameters
@@ -161,6 +162,7 @@ def arrange_labels(labels: dict, points: dict, texts: dict, obstacles=(), previo
     obstacles = np.asarray(obstacles, dtype=float).reshape(-1, 2)
     obst = ax.transData.transform(obstacles) * to_pt if len(obstacles) else np.zeros((0, 2))
     size = float(labels[names[0]].get_fontsize())
+    frame = np.asarray(ax.bbox.extents, dtype=float) * to_pt
     previous = previous or {}
     placed, done, dirs = [], set(), {}
     for i, name in enumerate(names):
@@ -178,7 +180,9 @@ def arrange_labels(labels: dict, points: dict, texts: dict, obstacles=(), previo
         def score(d, i=i, half=half, others=others, name=name):
             centre = pts[i] + np.array(d) * (4.0 + half)
             gap = float(np.min(np.hypot(*(others - centre).T))) if len(others) else 1e9
-            return gap * (1.15 if d == previous.get(name, LABEL_DIRECTIONS[0]) else 1.0)
+            # a label reaching out of the Axes would sit on the tick labels: the frame comes first
+            out = np.maximum(np.maximum(frame[:2] - (centre - half), (centre + half) - frame[2:]), 0.0)
+            return -round(float(out.sum())), gap * (1.15 if d == previous.get(name, LABEL_DIRECTIONS[0]) else 1.0)
 
         d = max(LABEL_DIRECTIONS, key=score)
         dirs[name] = d
