@@ -172,7 +172,12 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     >>> identity("alice_lab2.ipynb", None)
     ('alice', 'file name')
     >>> identity("s1234/lab2.ipynb", None)
-    ('s1234', 'file name')
+    ('s1234', 'folder name')
+
+    In the ``ID/...`` layout the folder names the student, whatever the file name says:
+
+    >>> identity("mallory/alice_lab1.ipynb", None)
+    ('mallory', "folder name; the file name names 'alice': the folder wins")
     >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "m77"})
     ('m77', 'roster')
     >>> identity("lab1.ipynb", None)[0]
@@ -184,10 +189,16 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
         return (sid, "roster") if sid else ("", "not in the roster")
     parts = rel.split("/")
     m = ID_PATTERN.match(parts[-1])
+    folder = parts[-2] if len(parts) >= 2 and _DIR_ID.match(parts[-2]) else None
+    if folder is not None and (m or re.match(r"^lab\d+", parts[-1])):
+        # the ID/... layout: the folder names the student (an upload system makes it, the student
+        # names the file); a file name that names someone else is noted, never believed
+        if m and m.group("id") != folder:
+            return folder, (f"folder name; the file name names {excerpt(m.group('id'), 40)!r}: "
+                            "the folder wins")
+        return folder, "folder name"
     if m:
         return m.group("id"), "file name"
-    if len(parts) >= 2 and _DIR_ID.match(parts[-2]) and re.match(r"^lab\d+", parts[-1]):
-        return parts[-2], "file name"
     return "", "the file name does not match ID_labN.ipynb or ID/labN.ipynb"
 
 
