@@ -769,3 +769,37 @@ def test_the_notebook_limit_stops_the_run_and_keeps_earlier_answers(tmp_path):
     assert row.status == "timeout" and row.scores["2.1"] == 1.0, (row.status, row.notes)
     assert "ran past its 15 s limit" in row.notes
     assert time.monotonic() - started < 15 + 10 + 120  # at most one cell limit past the budget, plus start-up
+
+
+def test_cgroup_cleanup_reaches_child_cgroups():
+    """Break 3: a process moved into a child cgroup ("hidden") is killed and the whole tree removed,
+    by :meth:`Cgroup.remove` and by :meth:`Cgroup.clean_stale` (the kernel itself cannot make one:
+    ``test_the_graders_working_folder_and_home_are_not_in_the_sandbox``)."""
+    from balancelab.course.caps import Caps, Cgroup
+
+    for stale in (False, True):
+        cg = Cgroup(Caps())
+        if not cg.dirs:
+            pytest.skip("no cgroup can be made here")
+        proc = subprocess.Popen(["sleep", "600"])
+        try:
+            hidden = []
+            for d in cg.dirs.values():
+                (d / "hidden").mkdir()
+                (d / "hidden" / "cgroup.procs").write_text(str(proc.pid))
+                hidden.append(d / "hidden")
+            if stale:  # a grader killed with SIGKILL: its cgroup is named after a pid that is gone
+                dead = subprocess.Popen(["true"])
+                dead.wait()
+                renamed = [d.rename(d.with_name(f"balancelab-{dead.pid}-{uuid.uuid4().hex[:12]}"))
+                           for d in cg.dirs.values()]
+                assert Cgroup.clean_stale() >= 1
+                gone = renamed
+            else:
+                cg.remove()
+                gone = hidden
+            assert proc.wait(timeout=10) == -9
+            assert not any(p.exists() for p in gone + hidden)
+        finally:
+            proc.kill()
+            proc.wait()

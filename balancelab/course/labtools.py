@@ -402,9 +402,22 @@ def stable_widget_id(name: str, cell: int, output: int) -> str:
     return hashlib.sha256(f"{name}:{cell}:{output}".encode()).hexdigest()[:32]
 
 
-def _copy_package(dst: Path) -> None:
-    """The library and its build files, without tests, labs, book or caches."""
+#: The grader's own modules (``balancelab/course``): the notebooks never import them, so the
+#: student hand-out leaves them out (its package cannot grade, only check).
+GRADER_MODULES = ("grading.py", "runner.py", "sandbox.py", "workers.py", "caps.py", "intake.py", "leaks.py",
+                  "gradetable.py")
+
+
+def _copy_package(dst: Path, grader: bool = True) -> None:
+    """The library and its build files, without tests, labs, book or caches (nor, for students,
+    the grader's modules :data:`GRADER_MODULES`)."""
     ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
+    if not grader:
+        course = (_ROOT / "balancelab" / "course").resolve()
+
+        def ignore(folder, names, _base=ignore):  # noqa: F811 - the caches, and the grader in course/
+            skip = set(_base(folder, names))
+            return skip | (set(GRADER_MODULES) & set(names) if Path(folder).resolve() == course else set())
     shutil.copytree(_ROOT / "balancelab", dst / "balancelab", ignore=ignore)
     for name in ("pyproject.toml", "LICENSE", "README.md", "constraints.txt"):
         if (_ROOT / name).exists():
@@ -450,7 +463,7 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
         raise FileExistsError(f"{out} exists and is not empty")
     generate(src, out / "labs")
     _handout_setup_cells(out / "labs")
-    _copy_package(out / "package")
+    _copy_package(out / "package", grader=False)
     (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
     _scan_handout(out, src)
     return out
