@@ -360,7 +360,7 @@ def _scores(row, lab):
 
 def test_the_batch_runs(graded):
     assert graded["proc"].returncode == 0, graded["proc"].stderr[-2000:]
-    assert len(graded["rows"]) == 36
+    assert len(graded["rows"]) == 42
 
 
 def test_right_wrong_half_done_and_crashing(graded):
@@ -474,7 +474,9 @@ def test_without_the_sandbox_the_grader_warns_and_still_grades(tmp_path):
 def test_a_grader_installed_under_tmp_still_runs_inside_the_sandbox(tmp_path, monkeypatch):
     """The sandbox gives submissions an empty /tmp of their own; a grader whose checkout or
     virtual environment lives under /tmp (a CI runner's clone) must still find its own Python
-    and package inside (a clean clone under /tmp once graded every notebook as an error)."""
+    and package inside (a clean clone under /tmp once graded every notebook as an error). Only
+    the Python's own folders are bound: a folder that is merely on ``sys.path`` (``python -m``
+    puts the working folder there) stays out (issue 18, second round)."""
     import tempfile
 
     from balancelab.course.sandbox import run_limited
@@ -482,15 +484,18 @@ def test_a_grader_installed_under_tmp_still_runs_inside_the_sandbox(tmp_path, mo
     if not sandbox_available():
         pytest.skip("bubblewrap is not available here")
     pkg = Path(tempfile.mkdtemp(dir="/tmp", prefix="grader_pkg_"))
+    probe = [sys.executable, "-c", "import probe_mod; print(probe_mod.X)"]
     try:
         (pkg / "probe_mod.py").write_text("X = 'the grader is visible'\n")
         monkeypatch.syspath_prepend(str(pkg))
         env = {**os.environ, "PYTHONPATH": str(pkg)}
-        r = run_limited([sys.executable, "-c", "import probe_mod; print(probe_mod.X)"], tmp_path, 60,
-                        env=env, sandbox=True)
+        on_path = run_limited(probe, tmp_path, 60, env=env, sandbox=True)
+        monkeypatch.setattr(sys, "exec_prefix", str(pkg))  # a Python installed under /tmp
+        r = run_limited(probe, tmp_path, 60, env=env, sandbox=True)
     finally:
         shutil.rmtree(pkg)
     assert r.sandboxed and r.stdout == "the grader is visible\n", (r.stdout, r.stderr[-500:])
+    assert on_path.stdout == "" and "No module named 'probe_mod'" in on_path.stderr
 
 
 # ------------------------------------------------------------------ issue 18
