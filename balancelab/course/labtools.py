@@ -30,7 +30,8 @@ import shutil
 import sys
 from pathlib import Path
 
-from .launch import SETUP_TAG, STUDENT_README, add_setup_cell, course_repository, setup_source
+from .launch import (GRADER_MODULES, SETUP_TAG, STUDENT_README, add_setup_cell, course_repository,
+                     setup_source)
 
 __all__ = ["PLACEHOLDER", "ANSWER_PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
            "stale", "execute_notebook", "stable_widget_id", "handout", "autograder", "main"]
@@ -402,22 +403,13 @@ def stable_widget_id(name: str, cell: int, output: int) -> str:
     return hashlib.sha256(f"{name}:{cell}:{output}".encode()).hexdigest()[:32]
 
 
-#: The grader's own modules (``balancelab/course``): the notebooks never import them, so the
-#: student hand-out leaves them out (its package cannot grade, only check).
-GRADER_MODULES = ("grading.py", "runner.py", "sandbox.py", "workers.py", "caps.py", "intake.py", "leaks.py",
-                  "gradetable.py")
-
-
 def _copy_package(dst: Path, grader: bool = True) -> None:
-    """The library and its build files, without tests, labs, book or caches (nor, for students,
-    the grader's modules :data:`GRADER_MODULES`)."""
-    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
-    if not grader:
-        course = (_ROOT / "balancelab" / "course").resolve()
-
-        def ignore(folder, names, _base=ignore):  # noqa: F811 - the caches, and the grader in course/
-            skip = set(_base(folder, names))
-            return skip | (set(GRADER_MODULES) & set(names) if Path(folder).resolve() == course else set())
+    """The library and its build files, without tests, labs, book or caches (nor, unless
+    ``grader``, :data:`~balancelab.course.launch.GRADER_MODULES`)."""
+    caches = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
+    course = _ROOT / "balancelab" / "course"
+    ignore = lambda folder, names: set(caches(folder, names)) | (  # noqa: E731
+        set() if grader or Path(folder) != course else set(GRADER_MODULES) & set(names))
     shutil.copytree(_ROOT / "balancelab", dst / "balancelab", ignore=ignore)
     for name in ("pyproject.toml", "LICENSE", "README.md", "constraints.txt"):
         if (_ROOT / name).exists():
