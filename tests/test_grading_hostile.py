@@ -733,15 +733,18 @@ def test_the_printed_summary_has_no_control_characters(graded):
 
 
 def test_the_folder_names_the_student_and_duplicate_ids_are_flagged(graded):
-    """Break 4: in the ``ID/...`` layout the folder id wins over an id in the file name (said in
-    the row); two submissions of one lab with one id are flagged on both rows."""
+    """Break 4: an id in the file name comes first; a folder that names another id is said in the
+    row, and two submissions of one lab with one id are flagged on both rows (mallory's copy of
+    alice's file and alice's own)."""
     rows = graded["rows"]
     mallory = rows["mallory/alice_lab2"]
-    assert mallory["2.1"] == "0" and "the file name names 'alice': the folder wins" in mallory["notes"], mallory
+    assert "the folder 'mallory' names another id: check whose it is" in mallory["notes"], mallory["notes"]
+    assert "DUPLICATE ID 'alice': also alice_lab2.ipynb" in mallory["notes"]
+    assert "DUPLICATE ID 'alice': also mallory/alice_lab2.ipynb" in rows["alice_lab2"]["notes"]
     for name, other in (("dup_lab2", "dup/lab2.ipynb"), ("dup/lab2", "dup_lab2.ipynb")):
         assert f"DUPLICATE ID 'dup': also {other}" in rows[name]["notes"], rows[name]["notes"]
         assert rows[name]["2.1"] == "1"
-    assert "DUPLICATE" not in rows["alice_lab2"]["notes"]
+    assert "DUPLICATE" not in rows["bob_lab2"]["notes"]
 
 
 def test_merge_reads_huge_cells_and_keeps_only_task_attempts(tmp_path):

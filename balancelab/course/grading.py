@@ -273,7 +273,7 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
                                                "resource limits only"])
     if not sid:
         notes.append(f"no student id ({how}): judged with the published numbers")
-    elif "wins" in how:  # the folder and the file name name different students
+    elif "check whose" in how:  # the folder and the file name name different students
         notes.append(f"judged as {excerpt(repr(sid), 40)}: {how}")
     declared = extra.get("declared")
     if declared and declared != sid:

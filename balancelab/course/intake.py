@@ -174,10 +174,10 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     >>> identity("s1234/lab2.ipynb", None)
     ('s1234', 'folder name')
 
-    In the ``ID/...`` layout the folder names the student, whatever the file name says:
+    An id in the file name comes first; a folder of another name is said (the row notes it):
 
     >>> identity("mallory/alice_lab1.ipynb", None)
-    ('mallory', "folder name; the file name names 'alice': the folder wins")
+    ('alice', "file name; the folder 'mallory' names another id: check whose it is")
     >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "m77"})
     ('m77', 'roster')
     >>> identity("lab1.ipynb", None)[0]
@@ -190,15 +190,15 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     parts = rel.split("/")
     m = ID_PATTERN.match(parts[-1])
     folder = parts[-2] if len(parts) >= 2 and _DIR_ID.match(parts[-2]) else None
-    if folder is not None and (m or re.match(r"^lab\d+", parts[-1])):
-        # the ID/... layout: the folder names the student (an upload system makes it, the student
-        # names the file); a file name that names someone else is noted, never believed
-        if m and m.group("id") != folder:
-            return folder, (f"folder name; the file name names {excerpt(m.group('id'), 40)!r}: "
-                            "the folder wins")
-        return folder, "folder name"
+    if m and folder is not None and m.group("id") != folder:
+        # ID_labN.ipynb in a folder of another name: a folder that groups files, or someone's upload
+        # folder holding a file named for a classmate; the file name's id is used, and the row says so
+        return m.group("id"), (f"file name; the folder {excerpt(folder, 40)!r} names another id: "
+                               "check whose it is")
     if m:
         return m.group("id"), "file name"
+    if folder is not None and re.match(r"^lab\d+", parts[-1]):
+        return folder, "folder name"
     return "", "the file name does not match ID_labN.ipynb or ID/labN.ipynb"
 
 
