@@ -513,3 +513,16 @@ def test_no_expected_value_in_student_versions_or_check_sources():
                 for name, text in texts.items():
                     found.extend([(t.id, s, name)] if s in text else [])
     assert found == []
+
+
+def test_every_check_path_is_counted_once():
+    """A student who bisects with ``check_data`` instead of ``check`` is counted too (issue 18)."""
+    from balancelab.course.check import core
+
+    before = dict(core.ATTEMPTS)
+    ck.check("2.1", 12.0)
+    ck.check_data("2.1", {"num": "13.0"})
+    ck.check_data("2.1", {"num": "14.0"}, "alice")
+    ck.check("no such task", 1.0)
+    assert core.ATTEMPTS.get("2.1", 0) - before.get("2.1", 0) == 3
+    assert "no such task" not in core.ATTEMPTS

@@ -150,6 +150,46 @@ OUTPUT_BOMB = "print('x' * (8 * 2 ** 20))\nfor _ in range(4):\n    print('y' * 2
 ANSWER_FILES = """import os
 os.mkfifo("answers.json")
 os.symlink("/dev/zero", "/tmp/answers.json")"""
+#: Issue 18, second round: what an outside tester did. The grader's working folder (it holds the
+#: solutions and the grades) and home must not show; no user namespace of its own (the way to mount
+#: a cgroup file system and raise its own caps); no cgroup file writable, no child cgroup.
+ESCAPE = """import ctypes, os, pathlib
+bad = []
+mounts = open("/proc/self/mountinfo").read()
+for p in ({cwd!r}, {home!r}):
+    if p in mounts or pathlib.Path(p).exists():
+        bad.append("saw " + p)
+libc = ctypes.CDLL(None, use_errno=True)
+if libc.unshare(0x10000000) == 0:  # CLONE_NEWUSER
+    bad.append("unshare(CLONE_NEWUSER) worked")
+own = open("/proc/self/cgroup").read().split("\\n")[0].rsplit(":", 1)[-1]
+for d in ("/sys/fs/cgroup", "/sys/fs/cgroup" + own):
+    for f in ("memory.max", "pids.max", "notify_on_release"):
+        try:
+            open(os.path.join(d, f), "w").write("max")
+            bad.append("wrote " + os.path.join(d, f))
+        except OSError:
+            pass
+    try:
+        os.mkdir(os.path.join(d, "hidden"))
+        bad.append("made a child cgroup in " + d)
+    except OSError:
+        pass
+if bad:
+    raise RuntimeError("ESCAPED " + "; ".join(bad))"""
+#: Attempt counts with keys and values the student chose (an escape sequence, a formula, 1 MB).
+ATTEMPT_KEYS = """from balancelab.course.check import core
+core.ATTEMPTS["\\x1b[2J=HYPERLINK(\\"http://x\\")\\n" + "A" * 2 ** 20] = 7
+core.ATTEMPTS["2.1"] = 10 ** 12"""
+#: An export line forged with the probe's own nonce, nested 200,000 deep (json.loads: RecursionError).
+DEEP_EXPORT = """import sys
+cls = type(sys.stdout)
+_write = cls.write
+def write(self, text):
+    if len(text) > 33 and text[32] == " " and all(c in "0123456789abcdef" for c in text[:32]):
+        text = text[:33] + "[" * 200000 + "]" * 200000 + "\\n"
+    return _write(self, text)
+cls.write = write"""
 NAMED_EXCEPTION = "raise type(\"=cmd|' /C calc'!A0\", (Exception,), {})('=HYPERLINK(\"x\")')"
 
 
@@ -206,7 +246,7 @@ class _HostSocket:
         os.unlink(self.path)
 
 
-def _submissions(sub: Path, host: Path, sock: _HostSocket, home: Path) -> None:
+def _submissions(sub: Path, host: Path, sock: _HostSocket, home: Path, cwd: Path) -> None:
     victim, pwned = host / "victim.txt", host / "pwned.txt"
     notebooks = {
         "alice_lab2": submission_notebook("lab2", K_LAMP("alice"), ENERGY, LEVER),
@@ -259,7 +299,16 @@ def _submissions(sub: Path, host: Path, sock: _HostSocket, home: Path) -> None:
         # item 7: formulas in names, exception names and answers
         "=1+2*3_lab2": submission_notebook("lab2", K_LAMP(""), NAMED_EXCEPTION),
         "long_lab2": submission_notebook("lab2", "k_lamp = '=HYPERLINK(\"http://x\")' + 'A' * 5000"),
+        # issue 18, second round
+        "escape_lab2": submission_notebook("lab2", K_LAMP("escape"), ESCAPE.format(cwd=str(cwd), home=str(home))),
+        "attempts_lab2": submission_notebook("lab2", K_LAMP("attempts"), ATTEMPT_KEYS),
+        "\x1b]0;pwned\x07\x1b[2Jterm_lab2": submission_notebook("lab2", K_LAMP("term")),
+        "mallory/alice_lab2": submission_notebook("lab2", K_LAMP("alice")),
+        "dup_lab2": submission_notebook("lab2", K_LAMP("dup")),
+        "dup/lab2": submission_notebook("lab2", K_LAMP("dup")),
     }
+    (sub / "mallory").mkdir()
+    (sub / "dup").mkdir()
     for name, nb in notebooks.items():
         nbformat.write(nb, sub / f"{name}.ipynb")
     (sub / "junk_lab2.ipynb").write_text("{this is not json", encoding="utf-8")
@@ -277,13 +326,15 @@ def graded(tmp_path_factory):
         pytest.skip("bubblewrap (bwrap) is not available: the sandbox cannot be tested")
     base = tmp_path_factory.mktemp("hostile")
     sub, host, home = base / "submissions", base / "host", base / "home"
-    for d in (sub, host, home):
+    cwd = base / "autograder"  # the instructor's working folder: the solutions and the grades are there
+    for d in (sub, host, home, cwd, cwd / "solutions"):
         d.mkdir()
+    (cwd / "solutions" / "lab2_solution.ipynb").write_text(SECRET, encoding="utf-8")
     (host / "victim.txt").write_text("keep me", encoding="utf-8")
     (home / "secret.txt").write_text(SECRET, encoding="utf-8")
     sock = _HostSocket()
     try:
-        _submissions(sub, host, sock, home)
+        _submissions(sub, host, sock, home, cwd)
         before_sub, before_host = _digest(sub), _digest(host)
         out = base / "grades.csv"
         scratch = base / "scratch"
@@ -293,13 +344,13 @@ def graded(tmp_path_factory):
         proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
                                "--cell-timeout", "10", "--notebook-timeout", "120", "--jobs", "2",
                                "--memory-mb", "1000", "--judge-timeout", "5"],
-                              capture_output=True, text=True, timeout=1500, cwd=ROOT, env=env)
+                              capture_output=True, text=True, timeout=1500, cwd=cwd, env=env)
         elapsed = time.monotonic() - started
     finally:
         sock.close()
     raw = list(csv.reader(out.open(encoding="utf-8"))) if out.exists() else []
     rows = {r["student"].lstrip("'"): r for r in csv.DictReader(out.open(encoding="utf-8"))} if out.exists() else {}
-    return dict(proc=proc, rows=rows, raw=raw, sub=sub, host=host, before_sub=before_sub, before_host=before_host,
+    return dict(proc=proc, rows=rows, raw=raw, size=out.stat().st_size if out.exists() else 0, sub=sub, host=host, before_sub=before_sub, before_host=before_host,
                 connections=len(sock.connections), elapsed=elapsed, started=started, scratch=scratch)
 
 
@@ -309,7 +360,7 @@ def _scores(row, lab):
 
 def test_the_batch_runs(graded):
     assert graded["proc"].returncode == 0, graded["proc"].stderr[-2000:]
-    assert len(graded["rows"]) == 36
+    assert len(graded["rows"]) == 42
 
 
 def test_right_wrong_half_done_and_crashing(graded):
@@ -423,7 +474,9 @@ def test_without_the_sandbox_the_grader_warns_and_still_grades(tmp_path):
 def test_a_grader_installed_under_tmp_still_runs_inside_the_sandbox(tmp_path, monkeypatch):
     """The sandbox gives submissions an empty /tmp of their own; a grader whose checkout or
     virtual environment lives under /tmp (a CI runner's clone) must still find its own Python
-    and package inside (a clean clone under /tmp once graded every notebook as an error)."""
+    and package inside (a clean clone under /tmp once graded every notebook as an error). Only
+    the Python's own folders are bound: a folder that is merely on ``sys.path`` (``python -m``
+    puts the working folder there) stays out (issue 18, second round)."""
     import tempfile
 
     from balancelab.course.sandbox import run_limited
@@ -431,15 +484,18 @@ def test_a_grader_installed_under_tmp_still_runs_inside_the_sandbox(tmp_path, mo
     if not sandbox_available():
         pytest.skip("bubblewrap is not available here")
     pkg = Path(tempfile.mkdtemp(dir="/tmp", prefix="grader_pkg_"))
+    probe = [sys.executable, "-c", "import probe_mod; print(probe_mod.X)"]
     try:
         (pkg / "probe_mod.py").write_text("X = 'the grader is visible'\n")
         monkeypatch.syspath_prepend(str(pkg))
         env = {**os.environ, "PYTHONPATH": str(pkg)}
-        r = run_limited([sys.executable, "-c", "import probe_mod; print(probe_mod.X)"], tmp_path, 60,
-                        env=env, sandbox=True)
+        on_path = run_limited(probe, tmp_path, 60, env=env, sandbox=True)
+        monkeypatch.setattr(sys, "exec_prefix", str(pkg))  # a Python installed under /tmp
+        r = run_limited(probe, tmp_path, 60, env=env, sandbox=True)
     finally:
         shutil.rmtree(pkg)
     assert r.sandboxed and r.stdout == "the grader is visible\n", (r.stdout, r.stderr[-500:])
+    assert on_path.stdout == "" and "No module named 'probe_mod'" in on_path.stderr
 
 
 # ------------------------------------------------------------------ issue 18
@@ -652,3 +708,106 @@ def test_no_lab_answer_in_a_docstring_of_the_package(tmp_path):
     right = round(single_link_spring(1.5, 0.4, 0.25, 0.12).parameters["k"], 3)
     (tmp_path / "leaky.py").write_text(f"def f():\n    '''>>> f()\n    {right}\n    '''\n", encoding="utf-8")
     assert [x.split(":")[0] for x in answer_leaks(tmp_path)] == ["task 2.1"]
+
+
+def test_the_graders_working_folder_and_home_are_not_in_the_sandbox(graded):
+    """Second round, break 1: the grader ran inside the folder with the solutions (``python -m`` puts
+    it on ``sys.path``); break 2: no user namespace of its own, no cgroup file, no child cgroup."""
+    row = graded["rows"]["escape_lab2"]
+    assert row["status"] == "graded" and row["2.1"] == "1", row
+    assert "RuntimeError" not in row["notes"], row["notes"]
+
+
+def test_attempt_keys_are_task_ids_and_counts_are_capped(graded):
+    """Break 5: keys the student chose never reach the table; the table stays small."""
+    row = graded["rows"]["attempts_lab2"]
+    assert row["2.1"] == "1" and row["attempts"] == "2.1:1000000", row["attempts"][:200]
+    assert graded["size"] < 200_000
+
+
+def test_the_printed_summary_has_no_control_characters(graded):
+    """Break 5: a file name with terminal escape sequences is printed without them."""
+    out = graded["proc"].stdout
+    assert "term_lab2" in out
+    assert not any(c in out for c in "\x1b\x07\r"), repr(out[-500:])
+
+
+def test_the_folder_names_the_student_and_duplicate_ids_are_flagged(graded):
+    """Break 4: an id in the file name comes first; a folder that names another id is said in the
+    row, and two submissions of one lab with one id are flagged on both rows (mallory's copy of
+    alice's file and alice's own)."""
+    rows = graded["rows"]
+    mallory = rows["mallory/alice_lab2"]
+    assert "the folder 'mallory' names another id: check whose it is" in mallory["notes"], mallory["notes"]
+    assert "DUPLICATE ID 'alice': also alice_lab2.ipynb" in mallory["notes"]
+    assert "DUPLICATE ID 'alice': also mallory/alice_lab2.ipynb" in rows["alice_lab2"]["notes"]
+    for name, other in (("dup_lab2", "dup/lab2.ipynb"), ("dup/lab2", "dup_lab2.ipynb")):
+        assert f"DUPLICATE ID 'dup': also {other}" in rows[name]["notes"], rows[name]["notes"]
+        assert rows[name]["2.1"] == "1"
+    assert "DUPLICATE" not in rows["bob_lab2"]["notes"]
+
+
+def test_merge_reads_huge_cells_and_keeps_only_task_attempts(tmp_path):
+    """Break 5: a table with a 1 MB cell (an older grader's) merges; the attempts are sanitised."""
+    from balancelab.course.grading import main
+
+    header = "student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,attempts\n"
+    big = "=HYPERLINK(1)" + "A" * 2 ** 20
+    (tmp_path / "a.csv").write_text(header + f'eve,lab2,graded,1,1,1,,,ok,1,1,"2.1:3 {big}:5"\n', encoding="utf-8")
+    (tmp_path / "b.csv").write_text(header + "bob,lab2,graded,0,1,0,,,no,1,1,2.1:2\n", encoding="utf-8")
+    assert main(["merge", str(tmp_path / "a.csv"), str(tmp_path / "b.csv"), "--out", str(tmp_path / "all.csv")]) == 0
+    rows = {r["student"]: r for r in csv.DictReader((tmp_path / "all.csv").open(encoding="utf-8"))}
+    assert rows["eve"]["attempts"] == "2.1:3" and rows["bob"]["attempts"] == "2.1:2"
+    assert (tmp_path / "all.csv").stat().st_size < 10_000
+
+
+def test_the_notebook_limit_stops_the_run_and_keeps_earlier_answers(tmp_path):
+    """Break 6: cells that each stay under the cell limit run past the notebook limit: the status
+    is ``timeout``, the answers given before count; a forged export line nested 200,000 deep is
+    no export (the answers before it stay)."""
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    from balancelab.course.grading import grade_notebook
+
+    nb = submission_notebook("lab2", K_LAMP("slow"), DEEP_EXPORT, *["import time\ntime.sleep(6)"] * 8)
+    path = tmp_path / "slow_lab2.ipynb"
+    nbformat.write(nb, path)
+    started = time.monotonic()
+    row = grade_notebook(path, cell_timeout=10, notebook_timeout=15)
+    assert row.status == "timeout" and row.scores["2.1"] == 1.0, (row.status, row.notes)
+    assert "ran past its 15 s limit" in row.notes
+    assert time.monotonic() - started < 15 + 10 + 120  # at most one cell limit past the budget, plus start-up
+
+
+def test_cgroup_cleanup_reaches_child_cgroups():
+    """Break 3: a process moved into a child cgroup ("hidden") is killed and the whole tree removed,
+    by :meth:`Cgroup.remove` and by :meth:`Cgroup.clean_stale` (the kernel itself cannot make one:
+    ``test_the_graders_working_folder_and_home_are_not_in_the_sandbox``)."""
+    from balancelab.course.caps import Caps, Cgroup
+
+    for stale in (False, True):
+        cg = Cgroup(Caps())
+        if not cg.dirs:
+            pytest.skip("no cgroup can be made here")
+        proc = subprocess.Popen(["sleep", "600"])
+        try:
+            hidden = []
+            for d in cg.dirs.values():
+                (d / "hidden").mkdir()
+                (d / "hidden" / "cgroup.procs").write_text(str(proc.pid))
+                hidden.append(d / "hidden")
+            if stale:  # a grader killed with SIGKILL: its cgroup is named after a pid that is gone
+                dead = subprocess.Popen(["true"])
+                dead.wait()
+                renamed = [d.rename(d.with_name(f"balancelab-{dead.pid}-{uuid.uuid4().hex[:12]}"))
+                           for d in cg.dirs.values()]
+                assert Cgroup.clean_stale() >= 1
+                gone = renamed
+            else:
+                cg.remove()
+                gone = hidden
+            assert proc.wait(timeout=10) == -9
+            assert not any(p.exists() for p in gone + hidden)
+        finally:
+            proc.kill()
+            proc.wait()

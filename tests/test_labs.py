@@ -197,6 +197,9 @@ def test_handout_has_no_solutions_and_autograder_has_them(tmp_path):
     assert sorted(p.name for p in (out / "labs").glob("*.ipynb")) == [p.name for p in SOLUTION_FILES]
     assert (out / "package" / "balancelab" / "course" / "check" / "core.py").exists()
     assert (out / "package" / "pyproject.toml").exists() and "pip install" in (out / "README.md").read_text()
+    # the grader's own modules (its sandbox, runner, table) are not the students' (issue 18)
+    course = out / "package" / "balancelab" / "course"
+    assert labtools.GRADER_MODULES and not [m for m in labtools.GRADER_MODULES if (course / m).exists()]
     every = [p for p in out.rglob("*") if p.is_file()]
     assert not any("solutions" in p.parts or p.suffix == ".pyc" for p in every)
     notebooks = "\n".join(p.read_text(encoding="utf-8") for p in every if p.suffix == ".ipynb")
@@ -213,6 +216,7 @@ def test_handout_has_no_solutions_and_autograder_has_them(tmp_path):
     assert labtools.autograder(grader) == grader
     assert sorted(p.name for p in (grader / "solutions").glob("*.ipynb")) == [p.name for p in SOLUTION_FILES]
     assert "balancelab.course.grading" in (grader / "README.md").read_text()
+    assert all((grader / "package" / "balancelab" / "course" / m).exists() for m in labtools.GRADER_MODULES)
 
 
 def test_execute_keeps_widget_ids_stable(tmp_path):

@@ -211,11 +211,12 @@ class Cgroup:
         return out
 
     def kill(self) -> None:
-        """SIGKILL every process still in the cgroup."""
+        """SIGKILL every process still in the cgroup or in any cgroup below it (a submission may have
+        made child cgroups and moved processes there)."""
         for _ in range(20):
             alive = False
             for d in self.dirs.values():
-                for pid in _pids(d):
+                for pid in (p for sub in _tree(d) for p in _pids(sub)):
                     alive = True
                     try:
                         os.kill(pid, signal.SIGKILL)
@@ -226,18 +227,32 @@ class Cgroup:
             time.sleep(0.05)
 
     def remove(self) -> None:
-        """Kill what is left and delete the cgroup."""
+        """Kill what is left and delete the cgroup with every cgroup below it (deepest first)."""
         self.kill()
-        for d in list(self.dirs.values()):
-            for _ in range(40):
-                try:
-                    d.rmdir()
-                    break
-                except FileNotFoundError:
-                    break
-                except OSError:
-                    time.sleep(0.05)
+        for top in list(self.dirs.values()):
+            for d in reversed(_tree(top)):
+                for _ in range(40):
+                    try:
+                        d.rmdir()
+                        break
+                    except FileNotFoundError:
+                        break
+                    except OSError:
+                        time.sleep(0.05)
         self.dirs = {}
+
+
+def _tree(d: Path) -> list[Path]:
+    """``d`` and every cgroup folder below it, parents before children (links are not followed)."""
+    out, todo = [], [d]
+    while todo:
+        cur = todo.pop()
+        out.append(cur)
+        try:
+            todo += sorted(p for p in cur.iterdir() if p.is_dir() and not p.is_symlink())
+        except OSError:
+            pass
+    return out
 
 
 def _pids(d: Path) -> list[int]:

@@ -139,9 +139,22 @@ def _header(cols: list[str]) -> list[str]:
             + [f"{c} message" for c in cols] + _EXTRA)
 
 
+def _attempts(counts: dict) -> dict:
+    """Attempt counts as a table holds them: task ids (``N.M``) only, counts from 0 to 10**6."""
+    out = {}
+    for k, v in counts.items():
+        try:
+            v = int(v)
+        except (TypeError, ValueError, OverflowError):
+            continue
+        if isinstance(k, str) and re.fullmatch(r"\d{1,3}\.\d{1,3}", k):
+            out[k] = min(max(v, 0), 10 ** 6)
+    return out
+
+
 def _record(r: GradeRow, cols: list[str]) -> list[str]:
     num = lambda x: "" if x is None else f"{x:g}"  # noqa: E731
-    attempts = " ".join(f"{k}:{v}" for k, v in sorted(r.attempts.items()))
+    attempts = " ".join(f"{k}:{v}" for k, v in sorted(_attempts(r.attempts).items()))
     return [cell(x) for x in [r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
             + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes, r.mismatch]
             + [r.messages.get(c, "") for c in cols] + [num(r.seconds), num(r.peak_mb), attempts]]
@@ -243,19 +256,22 @@ def read_csv(path: str | Path) -> list[GradeRow]:
     {'2.1': 1.0}
     """
     rows = []
+    # a table written by an older grader may hold a huge cell (a student's text): read it, then cut it short
+    csv.field_size_limit(max(csv.field_size_limit(), 2 ** 30))
     with Path(path).open(newline="", encoding="utf-8") as f:
         for rec in csv.DictReader(f):
             lab = _uncell(rec.get("lab", "") or "")
             tids = [k for k in rec if re.fullmatch(r"\d+\.\d+", k or "") and rec[k] != ""]
             points = {t.id: float(t.points) for t in _check.tasks(lab)} if lab else {}
             scores = {k: float(rec[k]) for k in tids}
-            rec = {k: _uncell(v or "") for k, v in rec.items()}
+            rec = {k: _uncell(v or "")[:4000] for k, v in rec.items() if isinstance(k, str)}
             num = lambda x: float(x) if x else None  # noqa: E731
             attempts = dict(a.split(":", 1) for a in rec.get("attempts", "").split() if ":" in a)
+            attempts = _attempts({k: v for k, v in attempts.items() if v.isdigit()})
             rows.append(GradeRow(rec["student"], lab, rec["status"], scores, {k: points.get(k, 0.0) for k in tids},
                                  rec.get("notes", ""), {k: rec.get(f"{k} message", "") for k in tids},
                                  rec.get("mismatch", ""), num(rec.get("seconds")), num(rec.get("peak_mb")),
-                                 {k: int(v) for k, v in attempts.items() if v.isdigit()}))
+                                 attempts))
     return rows
 
 
@@ -315,10 +331,15 @@ def summary(rows: list[GradeRow]) -> str:
     >>> print("\\n".join(summary(rows).splitlines()[-2:]))
     2 notebooks, 1 graded, 1 with problems
       bob: malformed: not a valid notebook
+
+    Student-chosen text is printed without control characters (no terminal escape sequence):
+
+    >>> "\\x1b" in summary([GradeRow("\\x1b]0;pwned\\x07\\x1b[2Jeve", "", "malformed", notes="x\\nFAKE")])
+    False
     """
     cols = _task_columns(rows)
     head = ["student", "lab", "status", "score"] + cols
-    body = [[r.student, r.lab, r.status, f"{r.total:g}/{r.max_total:g}"]
+    body = [[excerpt(r.student, 60), excerpt(r.lab, 20), excerpt(r.status, 20), f"{r.total:g}/{r.max_total:g}"]
             + [f"{r.scores[c]:g}" if c in r.scores else "-" for c in cols] for r in rows]
     widths = [max(len(str(x)) for x in col) for col in zip(head, *body)] if body else [len(h) for h in head]
     fmt = lambda cells: "  ".join(str(c).ljust(w) for c, w in zip(cells, widths))  # noqa: E731
@@ -327,7 +348,7 @@ def summary(rows: list[GradeRow]) -> str:
     lines.append(f"{len(rows)} notebooks, {len(graded)} graded, {len(rows) - len(graded)} with problems")
     for r in rows:
         if r.status != "graded":
-            lines.append(f"  {r.student}: {r.status}: {r.notes}")
+            lines.append(f"  {excerpt(r.student, 60)}: {excerpt(r.status, 20)}: {excerpt(r.notes, 400)}")
         elif r.mismatch:
-            lines.append(f"  {r.student}: lab mismatch: {r.mismatch}")
+            lines.append(f"  {excerpt(r.student, 60)}: lab mismatch: {excerpt(r.mismatch, 200)}")
     return "\n".join(lines)

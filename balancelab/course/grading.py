@@ -63,6 +63,8 @@ __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "
 
 
 STUDENT_VARIABLE = "STUDENT_ID"
+#: Largest attempt count a row records for one task (the kernel reports the counts).
+ATTEMPTS_CAP = 10 ** 6
 
 
 def grade_answers(answers: dict, lab: str, student: str = "") -> dict:
@@ -147,14 +149,14 @@ def _parse_notebook(data: bytes):
 
 
 def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps: Caps, sandbox: bool,
-            scratch: Path) -> tuple[list[dict], str, Cgroup]:
+            scratch: Path, notebook_timeout: float | None = None) -> tuple[list[dict], str, Cgroup]:
     """Start the runner for one notebook; its report lines and how it ended."""
     share = scratch / "ipc"
     share.mkdir()
     cgroup = Cgroup(caps)
     job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
                caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
-               scratch=str(scratch))
+               scratch=str(scratch), notebook_timeout=notebook_timeout)
     lines, ended, _ = forked_runner(job, wall, int(wall) + 30)
     return lines, ended, cgroup
 
@@ -169,7 +171,8 @@ def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeo
         copy.write_bytes(path_data)
         ntasks = len(_check.tasks(lab))
         wall = notebook_timeout + ntasks * caps.judge_seconds + 60
-        lines, ended, cgroup = _runner(copy, lab, sid, cell_timeout, wall, caps, sandbox, scratch)
+        wall += cell_timeout + 30  # the runner stops itself first (a cell interrupted at the limit, its export)
+        lines, ended, cgroup = _runner(copy, lab, sid, cell_timeout, wall, caps, sandbox, scratch, notebook_timeout)
         run = next((x["run"] for x in lines if isinstance(x.get("run"), dict)), None)
         results = {x["task"]["id"]: x["task"] for x in lines if isinstance(x.get("task"), dict)}
         peak = cgroup.peak()
@@ -185,8 +188,9 @@ def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeo
             extra["declared"] = run["declared"]
         if run.get("peak") and not peak:
             extra["peak"] = run["peak"]
-        extra["attempts"] = {str(k): int(v) for k, v in run.get("attempts", {}).items()
-                             if isinstance(v, int) and not isinstance(v, bool)}
+        known = {t.id for t in _check.tasks(lab)}  # the keys come from the kernel: only task ids, counts capped
+        extra["attempts"] = {k: min(max(int(v), 0), ATTEMPTS_CAP) for k, v in run.get("attempts", {}).items()
+                             if k in known and isinstance(v, int) and not isinstance(v, bool)}
         missing = [t.id for t in _check.tasks(lab) if t.id not in results]
         if missing:
             notes.append(f"{ended or 'the runner stopped'} while checking task {missing[0]}: "
@@ -269,6 +273,8 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
                                                "resource limits only"])
     if not sid:
         notes.append(f"no student id ({how}): judged with the published numbers")
+    elif "check whose" in how:  # the folder and the file name name different students
+        notes.append(f"judged as {excerpt(repr(sid), 40)}: {how}")
     declared = extra.get("declared")
     if declared and declared != sid:
         notes.append(f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)} but is "
@@ -385,18 +391,39 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
             print(f"graded {excerpt(name, 80)}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
         return row
 
-    rows = {}
+    rows, owners = {}, _duplicate_ids(folder, files, roster)
     try:
         with ThreadPoolExecutor(max_workers=jobs) as pool:
             futures = {pool.submit(one, p): p for p in files}
             for fut in as_completed(futures):
                 rows[futures[fut]] = row = fut.result()
+                if futures[fut] in owners:
+                    row.notes = "; ".join(x for x in (owners[futures[fut]], row.notes) if x)
                 if writer is not None:
                     writer.add(row)
     finally:
         if writer is not None:
             writer.close()
     return [rows[p] for p in files if p in rows]
+
+
+def _duplicate_ids(folder: Path, files: list, roster) -> dict:
+    """A note for every submission whose student id another submission of the same lab also has
+    (file -> note); the lab is the one the file name names (``""`` when it names none)."""
+    groups: dict = {}
+    for p in files:
+        rel = str(p.relative_to(folder))
+        sid, _ = identity(rel, roster)
+        lab = re.search(r"lab(\d+)", p.name)
+        if sid:
+            groups.setdefault((sid, lab.group(1) if lab else ""), []).append(rel)
+    out = {}
+    for (sid, _), rels in groups.items():
+        if len(rels) > 1:
+            for p in rels:
+                others = ", ".join(excerpt(r, 60) for r in rels if r != p)
+                out[folder / p] = f"DUPLICATE ID {excerpt(sid, 40)!r}: also {excerpt(others, 200)}"
+    return out
 
 
 def _parser() -> argparse.ArgumentParser:

@@ -172,7 +172,12 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     >>> identity("alice_lab2.ipynb", None)
     ('alice', 'file name')
     >>> identity("s1234/lab2.ipynb", None)
-    ('s1234', 'file name')
+    ('s1234', 'folder name')
+
+    An id in the file name comes first; a folder of another name is said (the row notes it):
+
+    >>> identity("mallory/alice_lab1.ipynb", None)
+    ('alice', "file name; the folder 'mallory' names another id: check whose it is")
     >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "m77"})
     ('m77', 'roster')
     >>> identity("lab1.ipynb", None)[0]
@@ -184,10 +189,16 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
         return (sid, "roster") if sid else ("", "not in the roster")
     parts = rel.split("/")
     m = ID_PATTERN.match(parts[-1])
+    folder = parts[-2] if len(parts) >= 2 and _DIR_ID.match(parts[-2]) else None
+    if m and folder is not None and m.group("id") != folder:
+        # ID_labN.ipynb in a folder of another name: a folder that groups files, or someone's upload
+        # folder holding a file named for a classmate; the file name's id is used, and the row says so
+        return m.group("id"), (f"file name; the folder {excerpt(folder, 40)!r} names another id: "
+                               "check whose it is")
     if m:
         return m.group("id"), "file name"
-    if len(parts) >= 2 and _DIR_ID.match(parts[-2]) and re.match(r"^lab\d+", parts[-1]):
-        return parts[-2], "file name"
+    if folder is not None and re.match(r"^lab\d+", parts[-1]):
+        return folder, "folder name"
     return "", "the file name does not match ID_labN.ipynb or ID/labN.ipynb"
 
 

@@ -30,7 +30,8 @@ import shutil
 import sys
 from pathlib import Path
 
-from .launch import SETUP_TAG, STUDENT_README, add_setup_cell, course_repository, setup_source
+from .launch import (GRADER_MODULES, SETUP_TAG, STUDENT_README, add_setup_cell, course_repository,
+                     setup_source)
 
 __all__ = ["PLACEHOLDER", "ANSWER_PLACEHOLDER", "student_version", "student_text", "solution_texts", "generate",
            "stale", "execute_notebook", "stable_widget_id", "handout", "autograder", "main"]
@@ -402,9 +403,13 @@ def stable_widget_id(name: str, cell: int, output: int) -> str:
     return hashlib.sha256(f"{name}:{cell}:{output}".encode()).hexdigest()[:32]
 
 
-def _copy_package(dst: Path) -> None:
-    """The library and its build files, without tests, labs, book or caches."""
-    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
+def _copy_package(dst: Path, grader: bool = True) -> None:
+    """The library and its build files, without tests, labs, book or caches (nor, unless
+    ``grader``, :data:`~balancelab.course.launch.GRADER_MODULES`)."""
+    caches = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
+    course = _ROOT / "balancelab" / "course"
+    ignore = lambda folder, names: set(caches(folder, names)) | (  # noqa: E731
+        set() if grader or Path(folder) != course else set(GRADER_MODULES) & set(names))
     shutil.copytree(_ROOT / "balancelab", dst / "balancelab", ignore=ignore)
     for name in ("pyproject.toml", "LICENSE", "README.md", "constraints.txt"):
         if (_ROOT / name).exists():
@@ -450,7 +455,7 @@ def handout(out: str | Path, src: str | Path = DEFAULT_SOLUTIONS) -> Path:
         raise FileExistsError(f"{out} exists and is not empty")
     generate(src, out / "labs")
     _handout_setup_cells(out / "labs")
-    _copy_package(out / "package")
+    _copy_package(out / "package", grader=False)
     (out / "README.md").write_text(STUDENT_README, encoding="utf-8")
     _scan_handout(out, src)
     return out

@@ -19,7 +19,7 @@ from __future__ import annotations
 from pathlib import Path
 from urllib.parse import quote, urlencode, urlsplit
 
-__all__ = ["SETUP_TAG", "STUDENT_README", "LAPTOP_STEPS", "ways_text", "course_repository", "install_source", "setup_source", "add_setup_cell",
+__all__ = ["SETUP_TAG", "STUDENT_README", "GRADER_MODULES", "LAPTOP_STEPS", "ways_text", "course_repository", "install_source", "setup_source", "add_setup_cell",
            "binder_url", "colab_url", "nbgitpuller_url", "lab_links"]
 
 _ROOT = Path(__file__).resolve().parents[2]
@@ -117,6 +117,12 @@ def _set_up(source="{source}"):
 
 
 _set_up()'''
+
+
+#: The grader's own modules (in ``balancelab/course``): no notebook imports them, so the student
+#: hand-out's package leaves them out (it can check answers, not grade).
+GRADER_MODULES = ("grading.py", "runner.py", "sandbox.py", "workers.py", "caps.py", "intake.py", "leaks.py",
+                  "gradetable.py")
 
 
 def course_repository(config: str | Path = _ROOT / "_config.yml") -> tuple[str, str]:

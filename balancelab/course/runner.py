@@ -210,7 +210,7 @@ def _exported(cell, nonce: str) -> dict | None:
             if line.startswith(nonce + " "):
                 try:
                     data = json.loads(line[len(nonce) + 1:])
-                except ValueError:
+                except (ValueError, RecursionError):  # a forged line nested too deep is no export
                     return None
                 found = data if isinstance(data, dict) else None
     return found
@@ -228,16 +228,26 @@ def _lock(share: Path) -> bool:
 
 
 def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int, cgroup: Cgroup,
-               errors: list, notes: list, full: dict) -> tuple[dict, str]:
+               errors: list, notes: list, full: dict, budget: float | None = None) -> tuple[dict, str]:
     """Run the code cells one by one, each followed by the export probe with a fresh nonce; returns the
-    last exported answers and the status (``graded``, ``timeout``, ``kernel died`` or ``error``)."""
+    last exported answers and the status (``graded``, ``timeout``, ``kernel died`` or ``error``).
+    ``budget`` (s) is the notebook limit: no cell starts once it is spent, and a cell that runs
+    into it is interrupted like one that reaches the cell limit."""
     import nbformat
     from nbclient.exceptions import CellTimeoutError, DeadKernelError
 
     answers, status = {}, "graded"
+    deadline = None if budget is None else time.monotonic() + budget
     for i, cell in enumerate(cells):
         if cell.cell_type != "code":
             continue
+        left = None if deadline is None else deadline - time.monotonic()
+        if left is not None and left <= 0:
+            status = "timeout"
+            notes.append(f"the notebook ran past its {budget:g} s limit before cell {i}: the cells from "
+                         "there on did not run; the answers given before are graded")
+            break
+        client.timeout = cell_timeout if left is None else max(1, min(cell_timeout, int(left) + 1))
         nonce = secrets.token_hex(16)
         probe = nbformat.v4.new_code_cell(export_source(variables, nonce), metadata={"export": True})
         try:
@@ -248,6 +258,7 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
                        for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
             cell.outputs = []
             nb.cells[0] = probe
+            client.timeout = cell_timeout  # the probe exports what the cell left, even past the budget
             client.execute_cell(probe, 0)
         except CellTimeoutError:
             status = "timeout"
@@ -291,7 +302,8 @@ def _cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
 
 
 def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
-                 caps: Caps | None = None, sandbox: bool = True, cgroup: Cgroup | None = None) -> dict:
+                 caps: Caps | None = None, sandbox: bool = True, cgroup: Cgroup | None = None,
+                 notebook_timeout: float | None = None) -> dict:
     """Execute a notebook cell by cell in a sandboxed kernel, exporting the answers after each cell.
 
     Parameters
@@ -310,6 +322,9 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         Run the kernel in bubblewrap (False: only with resource limits).
     cgroup : Cgroup, optional
         The submission's cgroup (made, read and removed by the caller); none by default.
+    notebook_timeout : float, optional
+        Limit of the whole notebook's cells (s): no cell starts after it, a cell that runs into it
+        is interrupted; the status is then ``timeout`` and the answers given before are kept.
 
     Returns
     -------
@@ -339,7 +354,8 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         with client.setup_kernel(stdout=open(os.devnull, "wb"), stderr=open(os.devnull, "wb")):
             if sandbox and not _lock(share):
                 notes.append("caps: the socket folder stays writable (not root): disk use there is capped per file only")
-            answers, status = _run_cells(client, nb, cells, variables, cell_timeout, cgroup, errors, notes, full)
+            answers, status = _run_cells(client, nb, cells, variables, cell_timeout, cgroup, errors, notes, full,
+                                         notebook_timeout)
     finally:
         peak, hits = cgroup.peak(), cgroup.hits()
         cgroup.kill()
@@ -401,7 +417,7 @@ def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
     _, status = os.waitpid(pid, 0)
     try:
         return json.loads(b"".join(chunks))
-    except ValueError:
+    except (ValueError, RecursionError):
         code = os.WEXITSTATUS(status) if os.WIFEXITED(status) else None
         if code == 3:
             return dict(correct=False, score=0.0, message="the answer needed more memory than the checker "
@@ -478,7 +494,8 @@ def _grade(job: dict, emit) -> None:
     start = time.monotonic()
     try:
         res = run_notebook(job["notebook"], variables, job["share"], int(job.get("cell_timeout", 60)), caps,
-                           not job.get("no_sandbox", False), Cgroup.attach(job.get("cgroup", {})))
+                           not job.get("no_sandbox", False), Cgroup.attach(job.get("cgroup", {})),
+                           job.get("notebook_timeout"))
     except Exception as e:  # the kernel could not start, the notebook could not be read
         res = dict(status="error", answers={}, attempts={}, errors=[], peak=None, hits=[],
                    notes=[f"the notebook could not be run ({type(e).__name__})"])

@@ -9,7 +9,11 @@ libraries, this Python and its packages read-only, the ``balancelab`` package fo
 submissions, no host ``/tmp`` or its sockets, no network (only a loopback of its own), no
 environment variable of the grader; one host folder may be shared (the kernel's sockets).
 When the command ends or is killed every process it started dies with its PID namespace
-(a detached child included).
+(a detached child included). It may not make user namespaces of its own (``--disable-userns``):
+without one it cannot mount anything (a cgroup file system to raise its own caps included).
+Note: bubblewrap run by root maps ``nobody`` to the host's root user; the kernel then has no
+capability and sees no host file it could write, but a grader run by an unprivileged account is
+safer still (the Python and the package must then be readable by that account).
 
 Without bubblewrap the command runs in a process group of its own with resource limits
 (CPU time, file size, address space), and :func:`run_limited` warns once that submissions
@@ -77,18 +81,27 @@ def sandbox_available() -> bool:
 
 
 def _python_roots() -> list[str]:
-    """Folders this Python needs: its prefixes and the folders on its import path, minus the
-    checkout (an editable install's repository root would show the solutions, tests and book:
-    only the package folder itself is bound, see :func:`kernel_binds`)."""
+    """Folders this Python needs: its prefixes, its standard library and its site-packages (never
+    ``sys.path`` as such: ``python -m`` puts the working folder first there, and the grader's
+    working folder may hold the solutions or the grades), minus the checkout (an editable install's
+    repository root would show the solutions, tests and book: only the package folder itself is
+    bound, see :func:`kernel_binds`), the home folder, the working folder and their parents."""
+    import site
+    import sysconfig
+
     checkout = Path(__file__).resolve().parents[2]
-    found = set()
     prefixes = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
-    for entry in prefixes + list(sys.path):
+    libs = [sysconfig.get_paths().get(k) for k in ("stdlib", "platstdlib", "purelib", "platlib")]
+    libs += site.getsitepackages() if hasattr(site, "getsitepackages") else []
+    never = {Path("/"), Path.cwd().resolve(), Path.home().resolve(), checkout}
+    found = set()
+    for entry in prefixes + libs:
         if not entry:
             continue
         path = Path(entry).resolve()
-        inside = path == checkout or checkout in path.parents or path in checkout.parents
-        if not path.is_dir() or path == Path("/") or (inside and entry not in prefixes) or path == checkout:
+        inside = checkout in path.parents or path in checkout.parents
+        near = any(path == n or path in n.parents for n in never)  # the cwd, home or a folder above them
+        if not path.is_dir() or near or (inside and entry not in prefixes):
             continue
         found.add(path)
     outer = [p for p in found if not any(q in p.parents for q in found)]
@@ -183,7 +196,7 @@ def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
             "--size", str(caps.tmp), "--tmpfs", "/tmp", "--size", str(caps.shm), "--tmpfs", "/dev/shm",
             "--size", str(caps.work), "--tmpfs", WORK, *kernel_binds(), *shared,
             "--unshare-all", "--unshare-user", "--uid", "65534", "--gid", "65534", "--hostname", "sandbox",
-            "--cap-drop", "ALL", "--die-with-parent", "--new-session", "--clearenv", *setenv,
+            "--disable-userns", "--cap-drop", "ALL", "--die-with-parent", "--new-session", "--clearenv", *setenv,
             "--chdir", WORK, "--"] + list(cmd)
 
 

@@ -128,7 +128,7 @@ def forked_runner(job: dict, wall: float, cpu: int) -> tuple[list[dict], str, in
                     break
                 try:
                     obj = json.loads(data)
-                except ValueError:
+                except (ValueError, RecursionError):
                     continue
                 if isinstance(obj, dict):
                     lines.append(obj)

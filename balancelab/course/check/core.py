@@ -309,10 +309,7 @@ def check(task_id: str, answer: Any) -> Verdict:
     Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
       Hint: Store a plain number in m or a string such as '2.5 m'.
     """
-    key = str(task_id)
-    if key in _TASKS:
-        ATTEMPTS[key] = ATTEMPTS.get(key, 0) + 1
-    return check_data(task_id, encode_answer(answer))
+    return check_data(task_id, encode_answer(answer))  # counted there
 
 
 def check_data(task_id: str, data: Any, student: str | None = None) -> Verdict:
@@ -320,7 +317,8 @@ def check_data(task_id: str, data: Any, student: str | None = None) -> Verdict:
 
     :func:`check` is ``check_data(task_id, encode_answer(answer))``, so the formative check in
     the notebook and the trusted grader run the same judge on the same data. The score is
-    never more than the task's points.
+    never more than the task's points. Each call is counted (:data:`ATTEMPTS`), as one of
+    :func:`check` is.
 
     Parameters
     ----------
@@ -343,6 +341,8 @@ def check_data(task_id: str, data: Any, student: str | None = None) -> Verdict:
     'Your answer is a Verdict, which cannot be graded: store the answer itself.'
     """
     t = _TASKS.get(str(task_id))
+    if t is not None:  # every check path is counted (check calls this)
+        ATTEMPTS[t.id] = ATTEMPTS.get(t.id, 0) + 1
     if t is None:
         return Verdict(str(task_id), False, f"There is no task {task_id!r}.",
                        f"Tasks are: {', '.join(t.id for t in tasks())}.", 0.0, 0.0)
