@@ -270,7 +270,7 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, 3, spring_model=REAL)
     with pytest.raises(ValueError, match="turn"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
-    with pytest.raises(ValueError, match="turns about the origin by one of the coordinates"):
+    with pytest.raises(ValueError, match=r"it must join the ground \(body 0\) to the body it pulls"):
         rz.noncircular_pulley(bl.singh.scissors_lift(), spring_model=REAL, angle_range=(0.3, 0.9))
 
 
@@ -366,10 +366,71 @@ def test_spring_limits_follow_the_hook_and_body_formulas():
     lim = rz.spring_limits(REAL)
     assert lim["hook_bending"] == pytest.approx(0.75 * sut / per_newton_bending, rel=1e-12)
     assert lim["hook_torsion"] == pytest.approx(0.40 * sut / per_newton_torsion, rel=1e-12)
-    assert lim["body"] == pytest.approx(REAL.max_force(), rel=1e-12)
+    assert lim["body"] == pytest.approx(REAL.max_forces()["body"], rel=1e-12)
     assert REAL.stress(lim["body"]) == pytest.approx(0.45 * sut, rel=1e-9)
 
 
 def test_a_full_turn_default_range_asks_for_angle_range(lever):
     with pytest.raises(ValueError, match=r"pass angle_range=\(lo, hi\)"):
         rz.noncircular_pulley(lever, spring_model=REAL)
+
+
+# ---------------------------------------------------------------- regressions of the outside attack (issue 25)
+def test_spring_limits_credit_the_part_that_governs(lever, design):
+    bare = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0, hooks=False)
+    assert rz.spring_limits(bare) == {"body": bare.max_forces()["body"], "max_force": bare.max_forces()["body"]}
+    # 270 N is within the bare body's 316.6 N: the spring check passes, whatever else refuses the profile
+    try:
+        d = rz.noncircular_pulley(lever, spring_model=bare, angle_range=(0.0, 0.3), min_tension=270.0)
+        assert d.parameters["limiting_part"] == "body"
+    except rz.ProfileError as err:
+        assert "hook" not in str(err) and "overstressed" not in str(err)
+    lim = rz.spring_limits(REAL)
+    weakest = min(("body", "hook_bending", "hook_torsion"), key=lim.get)
+    with pytest.raises(rz.ProfileError, match=rf"exceeds what its {weakest.replace('_', ' ')} allows, "
+                                              rf"{lim[weakest]:.4g} N"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(0.0, 0.3), min_tension=270.0)
+    p = design.parameters
+    assert p["limiting_part"] == weakest and p["allowable_force"] == lim[weakest]
+    # the reported stress is that of the governing part at the largest tension, at or below its allowable
+    assert p["max_stress"] == pytest.approx(float(REAL.stresses(p["max_tension"])[weakest]), rel=1e-12)
+    assert p["max_stress"] / float(REAL.stresses(lim[weakest])[weakest]) == pytest.approx(p["max_tension"] / lim[weakest])
+
+
+def test_a_lever_built_with_linkage_is_accepted_and_balanced():
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.spring("ground", (0.0, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
+    d = lk.build()
+    assert d.balance_report().balanced
+    real = rz.noncircular_pulley(d, spring_model=REAL, angle_range=RANGE, min_tension=45.0)
+    assert real.balance_report().balanced
+    assert real.q_range[0].tolist() == pytest.approx(list(RANGE))
+    q = np.linspace(*RANGE, 41)[:, None]
+    e = real.potential_energy(q).total
+    assert np.ptp(e) <= 1e-6 * MASS * G * LENGTH
+
+
+def test_a_spring_that_does_not_join_the_ground_or_a_pivoted_body_is_refused_with_the_reason():
+    lk = bl.Linkage("offset lever")
+    lk.revolute("ground", (0.1, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.spring("ground", (0.1, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
+    with pytest.raises(ValueError, match=r"turn about a ground pivot at the world origin"):
+        rz.noncircular_pulley(lk.build(), spring_model=REAL, angle_range=RANGE, min_tension=45.0)
+    none = bl.lecture.single_link_spring(MASS, LENGTH, B, C).replace(springs=[])
+    with pytest.raises(ValueError, match="has no spring"):
+        rz.noncircular_pulley(none, spring_model=REAL, angle_range=RANGE)
+
+
+@pytest.mark.parametrize("theta", [3.0, -3.0, RANGE[1] + 1e-3, RANGE[0] - 1e-3, 2 * math.pi, float("nan")])
+def test_every_angle_outside_the_covered_range_is_refused(design, theta):
+    profile = design.springs[0].cable
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.cable(theta)
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.tangent_parameter(np.array([0.0, theta]))
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.length(np.zeros(3), np.array([0.0, 0.0, theta]))
+    assert np.all(np.isfinite(profile.cable(np.linspace(*RANGE, 9)).path))

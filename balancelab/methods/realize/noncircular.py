@@ -23,6 +23,7 @@ profile's arc length, not from the formula above.
 """
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -32,15 +33,13 @@ from ...core.design import Design
 from ...core.elements import Spring
 from ...core.validation import finite_real, finite_reals, instance_of, planar_point
 from ...mechanisms.base import TreeKinematics
-from ..practice.springs import ExtensionSpring, tensile_strength
+from ..practice.springs import ExtensionSpring
 from .profile import NoncircularProfile, ProfileError
 
 __all__ = ["noncircular_pulley", "spring_limits", "ProfileError"]
 
 #: Chebyshev degrees tried for the energy and the profile (doubling until the tail is round-off)
 _DEGREES = (32, 64, 128, 256)
-#: Shigley's static limits for an extension spring's ends: hook bending, hook torsion (x S_ut)
-_HOOK_BENDING, _HOOK_TORSION = 0.75, 0.40
 
 
 def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) -> dict:
@@ -51,7 +50,8 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     loop, ``sigma = F (16 D K_A / (pi d^3) + 4 / (pi d^2))`` with
     ``K_A = (4 C^2 - C - 1) / (4 C (C - 1))``, at most 75 % of ``S_ut``; torsion at the bend,
     ``tau = 8 F D K_B / (pi d^3)`` with ``K_B = (4 C_2 - 1) / (4 C_2 - 4)``, ``C_2 = 4``, at
-    most 40 % of ``S_ut`` (Shigley's static limits for extension springs).
+    most 40 % of ``S_ut`` (Shigley's static limits for extension springs; in cyclic service
+    the fatigue fractions). A spring made without hooks has only its body's limit.
 
     Parameters
     ----------
@@ -63,7 +63,8 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     Returns
     -------
     dict
-        ``body``, ``hook_bending``, ``hook_torsion`` and ``max_force`` (the smallest), in N.
+        ``body`` and, for a spring with hooks, ``hook_bending`` and ``hook_torsion``, and
+        ``max_force`` (the smallest), in N (:meth:`ExtensionSpring.max_forces`).
 
     Examples
     --------
@@ -73,40 +74,35 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     True
     """
     instance_of("spring_model", spring_model, ExtensionSpring, "a practice.springs.ExtensionSpring")
-    d, D, C = spring_model.wire_diameter, spring_model.coil_diameter, spring_model.index
-    sut = float(tensile_strength(d, spring_model.material))
-    k_a = (4 * C * C - C - 1) / (4 * C * (C - 1))
-    bending = 16 * D * k_a / (math.pi * d ** 3) + 4 / (math.pi * d * d)   # Pa per N
-    c2 = 4.0
-    torsion = 8 * D * (4 * c2 - 1) / (4 * c2 - 4) / (math.pi * d ** 3)
-    out = {"body": spring_model.max_force(cycles), "hook_bending": _HOOK_BENDING * sut / bending,
-           "hook_torsion": _HOOK_TORSION * sut / torsion}
+    out = dict(spring_model.max_forces(cycles))     # body, and the hooks when the spring has them
     out["max_force"] = min(out.values())
     return out
 
 
 def _pivoted_link(design: Design, spring) -> tuple[int, int]:
-    """``(spring, coordinate)``: the spring's moving body turns about the origin by one coordinate."""
+    """``(spring, coordinate)``: the spring's moving body turns about the origin, its angle one coordinate."""
     instance_of("design", design, Design, "a balancelab Design")
     if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)):
         raise TypeError(f"spring must be the index of a spring of the design, got {spring!r}")
+    if not design.springs:
+        raise ValueError(f"{design.name} has no spring: noncircular_pulley replaces one of its springs")
     if not 0 <= spring < len(design.springs):
         raise ValueError(f"spring must be in 0..{len(design.springs) - 1}, got {spring}")
     s = design.springs[int(spring)]
+    if s.a.body != 0 and s.b.body != 0:
+        raise ValueError(f"{design.name}: spring {spring} joins {design.bodies[s.a.body]} to "
+                         f"{design.bodies[s.b.body]}; it must join the ground (body 0) to the body it pulls")
     body = s.b.body if s.a.body == 0 else s.a.body
-    kin = design.kinematics
-    row = getattr(kin, "angle_matrix", None)
-    fits = (row is not None and isinstance(kin, TreeKinematics) and (s.a.body == 0 or s.b.body == 0)
-            and np.count_nonzero(row[body]) == 1 and float(np.max(row[body])) == 1.0
-            and float(kin.angle_offset[body]) == 0.0)
-    if fits:
-        q = design.sample(16, seed=3)
-        fits = float(np.max(np.abs(design.poses(q)[:, body, :2]))) <= 1e-12
-    if not fits:
-        raise ValueError(f"{design.name}: spring {spring} must join the ground to a body that turns about the "
-                         "origin by one of the coordinates (a lever's link, or a 2R arm's link 1 or the base "
-                         "copy of link 2)")
-    return int(spring), int(np.flatnonzero(row[body])[0])
+    q = design.sample(16, seed=3)
+    poses = np.asarray(design.poses(q))
+    if float(np.max(np.abs(poses[:, body, :2]))) > 1e-9:
+        raise ValueError(f"{design.name}: spring {spring} pulls {design.bodies[body]}, whose frame's origin "
+                         "moves: the body must turn about a ground pivot at the world origin (0, 0)")
+    for coordinate in range(design.dof):
+        if np.allclose(poses[:, body, 2], q[:, coordinate], rtol=0.0, atol=1e-9):
+            return int(spring), coordinate
+    raise ValueError(f"{design.name}: the angle of {design.bodies[body]} (pulled by spring {spring}) must equal "
+                     "one of the coordinates (its absolute angle, no offset), e.g. a driving body of a Linkage")
 
 
 def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
@@ -120,13 +116,17 @@ def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, f
     return float(lo), float(hi)
 
 
-def _restricted(design: Design, coordinate: int, lo: float, hi: float) -> TreeKinematics:
+def _restricted(design: Design, coordinate: int, lo: float, hi: float):
     """The design's kinematics with the range of one coordinate narrowed to ``(lo, hi)``."""
     kin = design.kinematics
     q_range = np.array(kin.q_range, dtype=float)
     q_range[coordinate] = (lo, hi)
-    return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
-                          angle_offset=kin.angle_offset)
+    if isinstance(kin, TreeKinematics):
+        return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
+                              angle_offset=kin.angle_offset)
+    narrowed = copy.copy(kin)          # any other kinematics (a Linkage's): same solver, narrower range
+    narrowed.q_range = q_range
+    return narrowed
 
 
 def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: float):
@@ -270,7 +270,7 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
     if min_tension < spring_model.initial_tension:
         raise ProfileError(f"min_tension {min_tension:.4g} N is below the spring's initial tension "
                            f"{spring_model.initial_tension:.4g} N: the coils would close and the cable go slack")
-    part = min(("body", "hook_bending", "hook_torsion"), key=limits.get)
+    part = min((p for p in limits if p != "max_force"), key=limits.get)
     if max_tension > limits["max_force"]:
         raise ProfileError(
             f"the spring is overstressed: its largest tension {max_tension:.4g} N exceeds what its "
@@ -278,7 +278,7 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
             f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring or a lower min_tension")
     stroke = (max_tension - min_tension) / k
     return {"max_tension": max_tension, "stroke": stroke, "allowable_force": limits["max_force"],
-            "limiting_part": part, "max_stress": float(spring_model.stress(max_tension)),
+            "limiting_part": part, "max_stress": float(spring_model.stresses(max_tension)[part]),
             "max_length": spring_model.equivalent_free_length + max_tension / k}
 
 
