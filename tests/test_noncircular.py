@@ -141,7 +141,8 @@ def test_exported_points_balance_within_the_bound_their_spacing_implies(design, 
     r_min = float(np.min(circum))
     s = design.springs[0]
     anchor, end = np.array(s.a.point), np.array(s.b.point)
-    cable_length = design.parameters["cable_length"]
+    p = design.parameters
+    cable_length = p["cable_length"] - p["anchor_distance"]   # path minus spring length, from the build data
     rho = float(np.hypot(*anchor))
     arc = float(np.hypot(*np.diff(pts, axis=0).T).sum())
     # a vertex is at most `spacing` along the curve from the true tangent point: the path is
@@ -347,7 +348,8 @@ def test_every_profile_it_builds_balances_and_every_refusal_is_a_profile_error(m
         return
     theta = np.random.default_rng(0).uniform(lo, lo + span, 200)
     cab = d.springs[0].cable.cable(theta)
-    tension_now = REAL.k * (cab.path - d.parameters["cable_length"] - REAL.equivalent_free_length)
+    p = d.parameters
+    tension_now = REAL.k * (p["anchor_distance"] + cab.path - p["cable_length"] - REAL.equivalent_free_length)
     pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
     residual = tension_now * _cross(cab.tangent, pull) - mass * G * length * np.cos(theta)
     assert np.max(np.abs(residual)) < 1e-9 * mass * G * length
@@ -434,3 +436,26 @@ def test_every_angle_outside_the_covered_range_is_refused(design, theta):
     with pytest.raises(rz.ProfileError, match="the profile covers"):
         profile.length(np.zeros(3), np.array([0.0, 0.0, theta]))
     assert np.all(np.isfinite(profile.cable(np.linspace(*RANGE, 9)).path))
+
+
+def test_build_data_reassemble_to_the_models_spring_lengths(design):
+    p, s = design.parameters, design.springs[0]
+    eyelet, anchor = np.array(p["eyelet"]), np.array(p["spring_anchor"])
+    assert eyelet.tolist() == pytest.approx(list(s.a.point)) and list(p["clamp"]) == pytest.approx(list(s.b.point))
+    assert np.hypot(*(anchor - eyelet)) == pytest.approx(p["anchor_distance"], rel=1e-12)
+    # the anchor lies on the line from the pivot through the eyelet, beyond the eyelet
+    assert _cross(eyelet, anchor - eyelet) == pytest.approx(0.0, abs=1e-12) and np.dot(eyelet, anchor - eyelet) > 0
+    theta = np.linspace(*RANGE, 13)
+    cab = s.cable.cable(theta)
+    q = theta[:, None]
+    poses = design.poses(q)
+    model = s.cable.length(poses[:, 0], poses[:, 1])              # the spring's length in the model
+    # cable = (spring's hook end -> eyelet) + (eyelet -> tangent -> clamp E)
+    rebuilt = p["anchor_distance"] - model + cab.path
+    assert np.allclose(rebuilt, p["cable_length"], rtol=0, atol=1e-12)
+    # the clamp is where the cable ends, carried by the link
+    assert np.allclose(cab.end, s.cable.world(theta, np.array(p["clamp"])), atol=1e-12)
+    # the spring is never shorter than its body, and its hook end never reaches the eyelet
+    assert np.all(model >= REAL.body_length * (1 - 1e-12)) and np.all(model < p["anchor_distance"])
+    tension = REAL.k * (model - REAL.equivalent_free_length)
+    assert p["min_tension"] * (1 - 1e-6) <= tension.min() and tension.max() <= p["max_tension"] * (1 + 1e-6)

@@ -329,8 +329,17 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     Design
         ``parameters`` hold ``k``, ``free_length``, ``initial_tension``, ``min_tension``,
         ``max_tension`` (N), ``stroke`` (m), ``max_stress`` (Pa), ``allowable_force`` (N) and
-        ``limiting_part``, ``min_radius_of_curvature`` (m), ``cable_length`` (m), ``lo``, ``hi`` (rad),
-        of the spring just replaced; the design's range of that coordinate is ``(lo, hi)``.
+        ``limiting_part`` (the part that fails first: ``body``, ``hook_torsion`` or
+        ``hook_bending``; ``max_stress`` is its stress), ``min_radius_of_curvature`` (m),
+        ``lo``, ``hi`` (rad), and the build data: ``eyelet`` (world, m), ``spring_anchor``
+        (world, m: where the spring's far end is fixed, on the line from the pivot through
+        the eyelet, ``anchor_distance`` beyond the eyelet: the longest spring plus a coil
+        diameter), ``clamp`` (the cable's end ``E`` in the link's frame, m) and
+        ``cable_length`` (m, the cable from the spring's hook end through the eyelet to
+        ``E``), so that the spring's length is
+        ``anchor_distance + path - cable_length`` with ``path`` the cable's path from the
+        eyelet to ``E`` (:meth:`.NoncircularProfile.cable`); all of the spring just
+        replaced. The design's range of that coordinate is ``(lo, hi)``.
 
     Raises
     ------
@@ -371,7 +380,9 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
         found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
     profile, checks, theta, tension = found
-    sp_checks = _check_spring(spring_model, k, min_tension, float(np.max(tension)), cycles)
+    # the largest tension is where the rest's energy is lowest (the range's ends included, not only the nodes)
+    largest = max(math.hypot(min_tension, math.sqrt(2 * k * exchange)), float(np.max(tension)))
+    sp_checks = _check_spring(spring_model, k, min_tension, largest, cycles)
     return _assemble(design, (spring, coordinate), old, spring_model, profile, theta, tension,
                      {**checks, **sp_checks, "min_tension": min_tension, "lo": lo, "hi": hi})
 
@@ -384,6 +395,11 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
                                  profile.turn, cable_length)
     end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
+    # the spring hangs from a ground anchor on the line pivot -> eyelet, beyond the eyelet by the longest
+    # spring plus a coil diameter; its hook end pulls the cable through the eyelet to the clamp E
+    away = np.asarray(profile.anchor) / math.hypot(*profile.anchor)
+    reach = numbers["max_length"] + spring_model.coil_diameter
+    spring_anchor = tuple(float(v) for v in np.add(profile.pivot, profile.anchor) + reach * away)
     spring, coordinate = which
     body = old.b.body if old.a.body == 0 else old.a.body
     new = Spring(k, l_eq, (0, profile.anchor), (body, end), name=old.name or f"k{spring + 1}",
@@ -392,7 +408,9 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     springs[spring] = new
     lo, hi = profile.angle_range
     params = {**design.parameters, "k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension,
-              "cable_length": cable_length, **numbers}
+              **numbers, "cable_length": reach + cable_length, "spring_anchor": spring_anchor,
+              "eyelet": tuple(float(v) for v in np.add(profile.pivot, profile.anchor)),
+              "anchor_distance": reach, "clamp": end}
     labels = dict(design.labels)
     if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
         labels["eyelet"] = (0, profile.anchor)

@@ -78,8 +78,9 @@ class NoncircularProfile(CablePath):
     turn : {1, -1}
         1: the cable wraps counter-clockwise round the profile; -1: clockwise.
     cable_length : float
-        Cable from the spring's end to the clamp ``E`` (m): the spring's length is the
-        path's length minus this.
+        The path's length minus the spring's length (m): the cable from the spring's end
+        to the clamp ``E`` less the spring's anchor distance beyond the eyelet (the design's
+        ``parameters`` give both, ``cable_length`` and ``anchor_distance``).
 
     Examples
     --------
