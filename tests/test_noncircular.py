@@ -459,3 +459,31 @@ def test_build_data_reassemble_to_the_models_spring_lengths(design):
     assert np.all(model >= REAL.body_length * (1 - 1e-12)) and np.all(model < p["anchor_distance"])
     tension = REAL.k * (model - REAL.equivalent_free_length)
     assert p["min_tension"] * (1 - 1e-6) <= tension.min() and tension.max() <= p["max_tension"] * (1 + 1e-6)
+
+
+EDGE_RANGE = (math.radians(-80), math.radians(-10))
+
+
+def test_a_profile_too_near_the_axle_is_refused_with_a_min_tension_that_works(lever):
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=149.2)
+    with pytest.raises(ValueError, match=r"reach [\d.]+ mm into the cable's groove.*min_tension at most") as err:
+        rz.profile_part(d)
+    suggested = float(re.search(r"min_tension at most ([\d.]+) N", str(err.value)).group(1))
+    assert REAL.initial_tension < suggested < 149.2
+    fixed = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=suggested)
+    part = rz.profile_part(fixed)
+    hub = 0.008 / 2 + 0.004
+    prof = fixed.springs[0].cable
+    h = np.sum(part.pitch * prof.normals((part.link_angle - prof.mid) / prof.half), -1)
+    assert h.min() > hub + 0.0015 / 2 and fixed.balance_report().balanced
+
+
+def test_a_pivot_outside_the_profile_warns_at_synthesis_and_is_named_at_export(lever):
+    with pytest.warns(UserWarning, match="the pivot lies outside the profile"):
+        d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(-math.pi / 6, math.pi / 4),
+                                  eyelet=(0.0, 0.1))
+    assert d.balance_report().balanced and d.parameters["min_lever_arm"] < 0
+    h = np.polynomial.chebyshev.chebval(np.linspace(-1, 1, 201), d.springs[0].cable.h)
+    assert d.parameters["min_lever_arm"] == pytest.approx(h.min(), abs=1e-6)
+    with pytest.raises(ValueError, match="the pivot lies outside the profile"):
+        rz.profile_part(d)

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import copy
 import math
+import warnings
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -265,6 +266,20 @@ def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius
             raise err from None
 
 
+def _pivot_inside(profile: NoncircularProfile) -> float:
+    """The cable line's smallest distance from the pivot (m); warns when the pivot lies outside the profile."""
+    x = np.linspace(-1.0, 1.0, 2001)
+    h = cheb.chebval(x, profile.h)
+    i = int(np.argmin(h))
+    if h[i] <= 0:
+        warnings.warn(f"the pivot lies outside the profile (at link angle "
+                      f"{math.degrees(profile.mid + profile.half * x[i]):.2f}° the cable's line passes "
+                      f"{1000 * -h[i]:.3g} mm beyond it): the design balances, but the pulley needs an arm out to its "
+                      "axle and profile_part cannot cut it; the other turn, another eyelet or min_tension may keep "
+                      "the pivot inside", UserWarning, stacklevel=3)
+    return float(h[i])
+
+
 def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
     limits = spring_limits(spring_model, cycles)
     if min_tension < spring_model.initial_tension:
@@ -331,7 +346,8 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         ``max_tension`` (N), ``stroke`` (m), ``max_stress`` (Pa), ``allowable_force`` (N) and
         ``limiting_part`` (the part that fails first: ``body``, ``hook_torsion`` or
         ``hook_bending``; ``max_stress`` is its stress), ``min_radius_of_curvature`` (m),
-        ``lo``, ``hi`` (rad), and the build data: ``eyelet`` (world, m), ``spring_anchor``
+        ``min_lever_arm`` (m, the cable line's smallest distance from the pivot; not positive
+        when the pivot lies outside the profile, which also warns), ``lo``, ``hi`` (rad), and the build data: ``eyelet`` (world, m), ``spring_anchor``
         (world, m: where the spring's far end is fixed, on the line from the pivot through
         the eyelet, ``anchor_distance`` beyond the eyelet: the longest spring plus a coil
         diameter), ``clamp`` (the cable's end ``E`` in the link's frame, m) and
@@ -380,6 +396,7 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
         found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
     profile, checks, theta, tension = found
+    checks["min_lever_arm"] = _pivot_inside(profile)
     # the largest tension is where the rest's energy is lowest (the range's ends included, not only the nodes)
     largest = max(math.hypot(min_tension, math.sqrt(2 * k * exchange)), float(np.max(tension)))
     sp_checks = _check_spring(spring_model, k, min_tension, largest, cycles)
