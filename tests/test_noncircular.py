@@ -487,3 +487,21 @@ def test_a_pivot_outside_the_profile_warns_at_synthesis_and_is_named_at_export(l
     assert d.parameters["min_lever_arm"] == pytest.approx(h.min(), abs=1e-6)
     with pytest.raises(ValueError, match="the pivot lies outside the profile"):
         rz.profile_part(d)
+
+
+def test_the_tension_search_finds_a_narrow_feasible_band(lever):
+    # with a 21 mm cable bend only a narrow band of tensions just above the envelope's limit is wrappable
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021)
+    assert d.balance_report().balanced and d.parameters["min_radius_of_curvature"] >= 0.021
+    assert REAL.initial_tension <= d.parameters["min_tension"]
+
+
+def test_search_refusals_say_what_was_searched_and_never_advise_below_the_floor(lever):
+    with pytest.raises(rz.ProfileError, match=r"none found: no wrappable profile among \d+ values of min_tension") as err:
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.5)
+    assert "lower min_tension" not in str(err.value)
+    for tension in (REAL.initial_tension, 200.0):
+        try:
+            rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=tension, turn=1)
+        except rz.ProfileError as refusal:
+            assert tension > REAL.initial_tension or "lower min_tension" not in str(refusal)

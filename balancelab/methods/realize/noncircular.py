@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import warnings
 
 import numpy as np
@@ -222,24 +223,60 @@ def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> d
     return {"min_radius_of_curvature": float(rc[i]), "min_straight": float(straight[j])}
 
 
+def _kind(err: ProfileError) -> str:
+    """What failed, without the numbers: two tensions failing differently may hold a feasible one between."""
+    return re.sub(r"-?[\d.]+", "#", str(err))[:48]
+
+
+def _at_floor(err: ProfileError, tension: float, floor: float) -> ProfileError:
+    """The refusal at ``tension``; at the spring's initial tension it cannot advise a lower one."""
+    if tension > floor * (1 + 1e-12):
+        return err
+    text = str(err).replace("lower min_tension or use a stiffer spring", "min_tension is already the spring's "
+                            "initial tension (the lowest possible): use a stiffer spring")
+    text = text.replace("change min_tension or the eyelet", "raise min_tension or move the eyelet")
+    text = text.replace("choose a stronger spring or a lower min_tension", "choose a stronger spring (min_tension "
+                        "is already its initial tension)")
+    return ProfileError(text)
+
+
 def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
-    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``."""
+    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``.
+
+    A geometric grid of tensions, then bisection between neighbours that fail for different
+    reasons (a feasible band may lie between them).
+    """
     start = max(spring_model.initial_tension, 0.02 * limit)
-    best, first_error = None, None
-    for tension in np.geomspace(start, limit, 40):
+    found, failed = {}, {}
+
+    def attempt(tension):
         try:
-            found = _choose_turn(v_coef, k, float(tension), eyelet, turn, lo, hi, cable_bend_radius)
+            built = _choose_turn(v_coef, k, tension, eyelet, turn, lo, hi, cable_bend_radius)
         except ProfileError as err:
-            first_error = first_error or err
-            continue
-        size = float(np.max(np.hypot(*found[0].local_points(np.linspace(-1.0, 1.0, 201)).T)))
-        if best is None or size < best[2]:
-            best = (float(tension), found, size)
-    if best is None:
-        raise ProfileError(f"no min_tension between {start:.4g} N and {limit:.4g} N (above it the spring is "
-                           f"overstressed at the range's end) gives a "
-                           f"wrappable profile; at {start:.4g} N: {first_error}")
-    return best[:2]
+            failed[tension] = err
+            return False
+        found[tension] = (built, float(np.max(np.hypot(*built[0].local_points(np.linspace(-1, 1, 201)).T))))
+        return True
+
+    grid = [float(t) for t in np.geomspace(start, limit, 40)] if limit > start else [start]
+    for tension in grid:
+        attempt(tension)
+    for a, b in zip(grid, grid[1:]):
+        if a in failed and b in failed and _kind(failed[a]) != _kind(failed[b]):
+            ka = _kind(failed[a])
+            for _ in range(48):
+                mid = 0.5 * (a + b)
+                if attempt(mid) or mid in (a, b):
+                    break
+                a, b = (mid, b) if _kind(failed[mid]) == ka else (a, mid)
+    if not found:
+        err = _at_floor(failed[start], start, spring_model.initial_tension)
+        raise ProfileError(f"none found: no wrappable profile among {len(failed)} values of min_tension from "
+                           f"{start:.4g} N to {limit:.4g} N (a geometric grid of 40, refined by bisection where "
+                           f"the reason for failing changes; above {limit:.4g} N the spring is overstressed at the "
+                           f"range's end); pass min_tension to try another; at {start:.4g} N: {err}")
+    best = min(found, key=lambda t: found[t][1])
+    return best, found[best][0]
 
 
 def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
@@ -290,7 +327,9 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
         raise ProfileError(
             f"the spring is overstressed: its largest tension {max_tension:.4g} N exceeds what its "
             f"{part.replace('_', ' ')} allows, {limits['max_force']:.4g} N, by "
-            f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring or a lower min_tension")
+            f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring"
+            + (" or a lower min_tension" if min_tension > spring_model.initial_tension * (1 + 1e-12) else
+               " (min_tension is already its initial tension)"))
     stroke = (max_tension - min_tension) / k
     return {"max_tension": max_tension, "stroke": stroke, "allowable_force": limits["max_force"],
             "limiting_part": part, "max_stress": float(spring_model.stresses(max_tension)[part]),
@@ -394,7 +433,10 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     else:
         min_tension = finite_real("min_tension (N)", min_tension, positive=True)
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
-        found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
+        try:
+            found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
+        except ProfileError as err:
+            raise _at_floor(err, min_tension, spring_model.initial_tension) from None
     profile, checks, theta, tension = found
     checks["min_lever_arm"] = _pivot_inside(profile)
     # the largest tension is where the rest's energy is lowest (the range's ends included, not only the nodes)
