@@ -491,8 +491,12 @@ def test_a_pivot_outside_the_profile_warns_at_synthesis_and_is_named_at_export(l
 
 def test_the_tension_search_finds_a_narrow_feasible_band(lever):
     # with a 21 mm cable bend only a narrow band of tensions just above the envelope's limit is wrappable
-    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021)
+    # (those profiles are metres across: allowed explicitly by max_size)
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021,
+                              max_size=50.0)
     assert d.balance_report().balanced and d.parameters["min_radius_of_curvature"] >= 0.021
+    with pytest.raises(rz.ProfileError, match="none found"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021)
     assert REAL.initial_tension <= d.parameters["min_tension"]
 
 
@@ -505,3 +509,13 @@ def test_search_refusals_say_what_was_searched_and_never_advise_below_the_floor(
             rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=tension, turn=1)
         except rz.ProfileError as refusal:
             assert tension > REAL.initial_tension or "lower min_tension" not in str(refusal)
+
+
+def test_absurdly_large_profiles_are_refused_unless_allowed(lever):
+    with pytest.raises(rz.ProfileError, match=r"reach [\d.]+ m from the pivot, more than max_size 2 m"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0)
+    big = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0, max_size=20.0)
+    size = np.max(np.hypot(*big.springs[0].cable.local_points(np.linspace(-1, 1, 2001)).T))
+    assert 2.0 < size <= 20.0 and big.parameters["size"] == pytest.approx(size, rel=1e-3)
+    with pytest.raises(ValueError, match="max_size"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, max_size=-1.0)

@@ -107,6 +107,13 @@ def _pivoted_link(design: Design, spring) -> tuple[int, int]:
                      "one of the coordinates (its absolute angle, no offset), e.g. a driving body of a Linkage")
 
 
+def _linkage_size(design: Design, eyelet) -> float:
+    """The linkage's size (m): its farthest joint, load or spring point from its body's origin, or the eyelet."""
+    points = [j.point_i for j in design.joints] + [j.point_j for j in design.joints]
+    points += [ld.point for ld in design.loads] + [p.point for s in design.springs for p in (s.a, s.b)]
+    return max([math.hypot(*eyelet)] + [math.hypot(*p) for p in points])
+
+
 def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
     lo, hi = design.q_range[coordinate] if angle_range is None else finite_reals("angle_range (lo, hi, rad)", angle_range, 2)
     if not lo < hi:
@@ -240,7 +247,7 @@ def _at_floor(err: ProfileError, tension: float, floor: float) -> ProfileError:
     return ProfileError(text)
 
 
-def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
+def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, bounds):
     """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``.
 
     A geometric grid of tensions, then bisection between neighbours that fail for different
@@ -251,11 +258,11 @@ def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_
 
     def attempt(tension):
         try:
-            built = _choose_turn(v_coef, k, tension, eyelet, turn, lo, hi, cable_bend_radius)
+            built = _choose_turn(v_coef, k, tension, eyelet, turn, lo, hi, bounds)
         except ProfileError as err:
             failed[tension] = err
             return False
-        found[tension] = (built, float(np.max(np.hypot(*built[0].local_points(np.linspace(-1, 1, 201)).T))))
+        found[tension] = (built, built[1]["size"])
         return True
 
     grid = [float(t) for t in np.geomspace(start, limit, 40)] if limit > start else [start]
@@ -264,9 +271,9 @@ def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_
     for a, b in zip(grid, grid[1:]):
         if a in failed and b in failed and _kind(failed[a]) != _kind(failed[b]):
             ka = _kind(failed[a])
-            for _ in range(48):
+            while b - a > 1e-7 * b:
                 mid = 0.5 * (a + b)
-                if attempt(mid) or mid in (a, b):
+                if attempt(mid):
                     break
                 a, b = (mid, b) if _kind(failed[mid]) == ka else (a, mid)
     if not found:
@@ -279,26 +286,32 @@ def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_
     return best, found[best][0]
 
 
-def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
     ch, cp, (x, theta, tension) = _profile(v_coef, k, min_tension, eyelet, turn, lo, hi)
     profile = NoncircularProfile(ch, cp, (lo, hi), eyelet, (0.0, 0.0), turn, 0.0)
-    checks = _check_wrappable(profile, cable_bend_radius)
+    checks = _check_wrappable(profile, bounds[0])
+    size = float(np.max(np.hypot(*profile.local_points(np.linspace(-1.0, 1.0, 401)).T)))
+    if size > bounds[1]:
+        raise ProfileError(f"the profile would reach {size:.3g} m from the pivot, more than max_size "
+                           f"{bounds[1]:.3g} m (by default 4 times the linkage's size); raise min_tension or move "
+                           "the eyelet, or pass a larger max_size")
+    checks["size"] = size
     return profile, checks, theta, tension
 
 
-def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
     """The profile for ``turn``, or (``turn=None``) for the wrap that holds the pivot inside, else the other."""
     if turn is not None:
         if isinstance(turn, bool) or turn not in (1, -1):
             raise ValueError(f"turn must be 1 (counter-clockwise), -1 (clockwise) or None, got {turn!r}")
-        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, cable_bend_radius)
+        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, bounds)
     mean_slope = cheb.chebval(np.linspace(-1, 1, 101), cheb.chebder(v_coef)).mean()
     first = -1 if mean_slope > 0 else 1      # h = -turn V'/T > 0: the pivot inside the profile
     try:
-        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, cable_bend_radius)
+        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, bounds)
     except ProfileError as err:
         try:
-            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, cable_bend_radius)
+            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, bounds)
         except ProfileError:
             raise err from None
 
@@ -338,7 +351,8 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
 
 def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: ExtensionSpring, angle_range=None,
                        min_tension: float | None = None, eyelet=None, turn: int | None = None,
-                       cable_bend_radius: float = 0.005, cycles: float | None = None) -> Design:
+                       cable_bend_radius: float = 0.005, cycles: float | None = None,
+                       max_size: float | None = None) -> Design:
     """Replace a spring by a real spring whose cable wraps a non-circular pulley on the body it pulls.
 
     The profile is synthesized so that the real spring balances everything else of the
@@ -377,6 +391,10 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         Smallest radius (m) the cable may be bent to, > 0; the profile must not be sharper.
     cycles : float, optional
         Load cycles for the spring's allowable stress (static when omitted).
+    max_size : float, optional
+        Largest distance (m) of the profile from the pivot, > 0; default 4 times the
+        linkage's size (the farthest joint, load or spring attachment point from its body's
+        origin, or the eyelet from the pivot). Larger profiles are refused.
 
     Returns
     -------
@@ -386,8 +404,9 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         ``limiting_part`` (the part that fails first: ``body``, ``hook_torsion`` or
         ``hook_bending``; ``max_stress`` is its stress), ``min_radius_of_curvature`` (m),
         ``min_lever_arm`` (m, the cable line's smallest distance from the pivot; not positive
-        when the pivot lies outside the profile, which also warns), ``lo``, ``hi`` (rad), and the build data: ``eyelet`` (world, m), ``spring_anchor``
-        (world, m: where the spring's far end is fixed, on the line from the pivot through
+        when the pivot lies outside the profile, which also warns), ``size`` (m, the
+        profile's farthest point from the pivot), ``lo``, ``hi`` (rad), and the build data:
+        ``eyelet`` (world, m), ``spring_anchor`` (world, m: where the spring's far end is fixed, on the line from the pivot through
         the eyelet, ``anchor_distance`` beyond the eyelet: the longest spring plus a coil
         diameter), ``clamp`` (the cable's end ``E`` in the link's frame, m) and
         ``cable_length`` (m, the cable from the spring's hook end through the eyelet to
@@ -420,6 +439,9 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     ground = old.a if old.a.body == 0 else old.b
     eyelet = ground.point if eyelet is None else planar_point("eyelet (m)", eyelet)
     cable_bend_radius = finite_real("cable_bend_radius (m)", cable_bend_radius, positive=True)
+    max_size = 4 * _linkage_size(design, eyelet) if max_size is None else \
+        finite_real("max_size (m)", max_size, positive=True)
+    bounds = (cable_bend_radius, max_size)
     k = spring_model.k
     limit = spring_limits(spring_model, cycles)["max_force"]
     v_coef = _energy_series(design, spring, coordinate, lo, hi)
@@ -429,12 +451,12 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         top = math.sqrt(max(limit ** 2 - 2 * k * exchange, 0.0))   # highest smallest tension within the limit
         _check_spring(spring_model, k, spring_model.initial_tension, math.hypot(spring_model.initial_tension,
                       math.sqrt(2 * k * exchange)), cycles)
-        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, cable_bend_radius)
+        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, bounds)
     else:
         min_tension = finite_real("min_tension (N)", min_tension, positive=True)
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
         try:
-            found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
+            found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds)
         except ProfileError as err:
             raise _at_floor(err, min_tension, spring_model.initial_tension) from None
     profile, checks, theta, tension = found
