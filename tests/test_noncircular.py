@@ -519,3 +519,17 @@ def test_absurdly_large_profiles_are_refused_unless_allowed(lever):
     assert 2.0 < size <= 20.0 and big.parameters["size"] == pytest.approx(size, rel=1e-3)
     with pytest.raises(ValueError, match="max_size"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, max_size=-1.0)
+
+
+def test_the_flange_covers_the_whole_groove_and_the_core_plate(design):
+    from matplotlib.path import Path as MplPath
+
+    part = rz.profile_part(design, n=400)
+    outline = MplPath(part.flange)
+    assert np.all(outline.contains_points(part.pitch, radius=-1e-9) | outline.contains_points(part.pitch, radius=1e-9))
+    # every point of the cable's pitch curve, the clamped end included, lies inside the flange by >= 1 mm
+    edges = np.concatenate([part.flange, part.flange[:1]])
+    d = np.min([np.abs(_cross(b - a, part.pitch - a)) / np.hypot(*(b - a))
+                for a, b in zip(edges[:-1], edges[1:])], axis=0)
+    assert np.all(outline.contains_points(part.pitch)) and d.min() >= 1e-3 - 1e-12
+    assert np.all(outline.contains_points(part.groove, radius=1e-9) | outline.contains_points(part.groove, radius=-1e-9))

@@ -173,7 +173,12 @@ def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diamete
     hub = axle / 2 + boss
     _check_room(design, spring, prof, x, h, hub + cable / 2)
     groove = _closed(pitch - cable / 2 * normal, hub)
-    outer = _closed(pitch + flange * normal, hub)
+    # the flange covers the groove past both ends of the pitch curve by its height, and the core plate
+    tangent = np.stack([-normal[:, 1], normal[:, 0]], -1)
+    caps = np.concatenate([pitch[[0, -1]] + flange * (normal[[0, -1]] + sign * tangent[[0, -1]])
+                           for sign in (-1.0, 1.0)] + [pitch[[0, -1]] - cable / 2 * normal[[0, -1]]
+                                                       + sign * flange * tangent[[0, -1]] for sign in (-1.0, 1.0)])
+    outer = _closed(np.concatenate([pitch + flange * normal, caps, groove]), hub)
     return ProfilePart(pitch, groove, outer, axle, prof.mid + prof.half * x)
 
 
