@@ -512,7 +512,7 @@ def test_search_refusals_say_what_was_searched_and_never_advise_below_the_floor(
 
 
 def test_absurdly_large_profiles_are_refused_unless_allowed(lever):
-    with pytest.raises(rz.ProfileError, match=r"reach [\d.]+ m from the pivot, more than max_size 2 m"):
+    with pytest.raises(rz.ProfileError, match=r"reach [\d.]+ m from the pivot \(.*°\), more than max_size 2 m"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0)
     big = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0, max_size=20.0)
     size = np.max(np.hypot(*big.springs[0].cable.local_points(np.linspace(-1, 1, 2001)).T))

@@ -290,9 +290,13 @@ def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
     ch, cp, (x, theta, tension) = _profile(v_coef, k, min_tension, eyelet, turn, lo, hi)
     profile = NoncircularProfile(ch, cp, (lo, hi), eyelet, (0.0, 0.0), turn, 0.0)
     checks = _check_wrappable(profile, bounds[0])
-    size = float(np.max(np.hypot(*profile.local_points(np.linspace(-1.0, 1.0, 401)).T)))
+    x = np.linspace(-1.0, 1.0, 401)
+    reach = np.hypot(*profile.local_points(x).T)
+    far = int(np.argmax(reach))
+    size = float(reach[far])
     if size > bounds[1]:
-        raise ProfileError(f"the profile would reach {size:.3g} m from the pivot, more than max_size "
+        raise ProfileError(f"the profile would reach {size:.3g} m from the pivot (where the cable leaves it at "
+                           f"link angle {math.degrees(profile.mid + profile.half * x[far]):.2f}°), more than max_size "
                            f"{bounds[1]:.3g} m (by default 4 times the linkage's size); raise min_tension or move "
                            "the eyelet, or pass a larger max_size")
     checks["size"] = size
