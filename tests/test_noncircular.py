@@ -141,7 +141,8 @@ def test_exported_points_balance_within_the_bound_their_spacing_implies(design, 
     r_min = float(np.min(circum))
     s = design.springs[0]
     anchor, end = np.array(s.a.point), np.array(s.b.point)
-    cable_length = design.parameters["cable_length"]
+    p = design.parameters
+    cable_length = p["cable_length"] - p["anchor_distance"]   # path minus spring length, from the build data
     rho = float(np.hypot(*anchor))
     arc = float(np.hypot(*np.diff(pts, axis=0).T).sum())
     # a vertex is at most `spacing` along the curve from the true tangent point: the path is
@@ -270,7 +271,7 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, 3, spring_model=REAL)
     with pytest.raises(ValueError, match="turn"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
-    with pytest.raises(ValueError, match="turns about the origin by one of the coordinates"):
+    with pytest.raises(ValueError, match=r"it must join the ground \(body 0\) to the body it pulls"):
         rz.noncircular_pulley(bl.singh.scissors_lift(), spring_model=REAL, angle_range=(0.3, 0.9))
 
 
@@ -347,7 +348,8 @@ def test_every_profile_it_builds_balances_and_every_refusal_is_a_profile_error(m
         return
     theta = np.random.default_rng(0).uniform(lo, lo + span, 200)
     cab = d.springs[0].cable.cable(theta)
-    tension_now = REAL.k * (cab.path - d.parameters["cable_length"] - REAL.equivalent_free_length)
+    p = d.parameters
+    tension_now = REAL.k * (p["anchor_distance"] + cab.path - p["cable_length"] - REAL.equivalent_free_length)
     pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
     residual = tension_now * _cross(cab.tangent, pull) - mass * G * length * np.cos(theta)
     assert np.max(np.abs(residual)) < 1e-9 * mass * G * length
@@ -366,10 +368,168 @@ def test_spring_limits_follow_the_hook_and_body_formulas():
     lim = rz.spring_limits(REAL)
     assert lim["hook_bending"] == pytest.approx(0.75 * sut / per_newton_bending, rel=1e-12)
     assert lim["hook_torsion"] == pytest.approx(0.40 * sut / per_newton_torsion, rel=1e-12)
-    assert lim["body"] == pytest.approx(REAL.max_force(), rel=1e-12)
+    assert lim["body"] == pytest.approx(REAL.max_forces()["body"], rel=1e-12)
     assert REAL.stress(lim["body"]) == pytest.approx(0.45 * sut, rel=1e-9)
 
 
 def test_a_full_turn_default_range_asks_for_angle_range(lever):
     with pytest.raises(ValueError, match=r"pass angle_range=\(lo, hi\)"):
         rz.noncircular_pulley(lever, spring_model=REAL)
+
+
+# ---------------------------------------------------------------- regressions of the outside attack (issue 25)
+def test_spring_limits_credit_the_part_that_governs(lever, design):
+    bare = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0, hooks=False)
+    assert rz.spring_limits(bare) == {"body": bare.max_forces()["body"], "max_force": bare.max_forces()["body"]}
+    # 270 N is within the bare body's 316.6 N: the spring check passes, whatever else refuses the profile
+    try:
+        d = rz.noncircular_pulley(lever, spring_model=bare, angle_range=(0.0, 0.3), min_tension=270.0)
+        assert d.parameters["limiting_part"] == "body"
+    except rz.ProfileError as err:
+        assert "hook" not in str(err) and "overstressed" not in str(err)
+    lim = rz.spring_limits(REAL)
+    weakest = min(("body", "hook_bending", "hook_torsion"), key=lim.get)
+    with pytest.raises(rz.ProfileError, match=rf"exceeds what its {weakest.replace('_', ' ')} allows, "
+                                              rf"{lim[weakest]:.4g} N"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(0.0, 0.3), min_tension=270.0)
+    p = design.parameters
+    assert p["limiting_part"] == weakest and p["allowable_force"] == lim[weakest]
+    # the reported stress is that of the governing part at the largest tension, at or below its allowable
+    assert p["max_stress"] == pytest.approx(float(REAL.stresses(p["max_tension"])[weakest]), rel=1e-12)
+    assert p["max_stress"] / float(REAL.stresses(lim[weakest])[weakest]) == pytest.approx(p["max_tension"] / lim[weakest])
+
+
+def test_a_lever_built_with_linkage_is_accepted_and_balanced():
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.spring("ground", (0.0, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
+    d = lk.build()
+    assert d.balance_report().balanced
+    real = rz.noncircular_pulley(d, spring_model=REAL, angle_range=RANGE, min_tension=45.0)
+    assert real.balance_report().balanced
+    assert real.q_range[0].tolist() == pytest.approx(list(RANGE))
+    q = np.linspace(*RANGE, 41)[:, None]
+    e = real.potential_energy(q).total
+    assert np.ptp(e) <= 1e-6 * MASS * G * LENGTH
+
+
+def test_a_spring_that_does_not_join_the_ground_or_a_pivoted_body_is_refused_with_the_reason():
+    lk = bl.Linkage("offset lever")
+    lk.revolute("ground", (0.1, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.spring("ground", (0.1, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
+    with pytest.raises(ValueError, match=r"turn about a ground pivot at the world origin"):
+        rz.noncircular_pulley(lk.build(), spring_model=REAL, angle_range=RANGE, min_tension=45.0)
+    none = bl.lecture.single_link_spring(MASS, LENGTH, B, C).replace(springs=[])
+    with pytest.raises(ValueError, match="has no spring"):
+        rz.noncircular_pulley(none, spring_model=REAL, angle_range=RANGE)
+
+
+@pytest.mark.parametrize("theta", [3.0, -3.0, RANGE[1] + 1e-3, RANGE[0] - 1e-3, 2 * math.pi, float("nan")])
+def test_every_angle_outside_the_covered_range_is_refused(design, theta):
+    profile = design.springs[0].cable
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.cable(theta)
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.tangent_parameter(np.array([0.0, theta]))
+    with pytest.raises(rz.ProfileError, match="the profile covers"):
+        profile.length(np.zeros(3), np.array([0.0, 0.0, theta]))
+    assert np.all(np.isfinite(profile.cable(np.linspace(*RANGE, 9)).path))
+
+
+def test_build_data_reassemble_to_the_models_spring_lengths(design):
+    p, s = design.parameters, design.springs[0]
+    eyelet, anchor = np.array(p["eyelet"]), np.array(p["spring_anchor"])
+    assert eyelet.tolist() == pytest.approx(list(s.a.point)) and list(p["clamp"]) == pytest.approx(list(s.b.point))
+    assert np.hypot(*(anchor - eyelet)) == pytest.approx(p["anchor_distance"], rel=1e-12)
+    # the anchor lies on the line from the pivot through the eyelet, beyond the eyelet
+    assert _cross(eyelet, anchor - eyelet) == pytest.approx(0.0, abs=1e-12) and np.dot(eyelet, anchor - eyelet) > 0
+    theta = np.linspace(*RANGE, 13)
+    cab = s.cable.cable(theta)
+    q = theta[:, None]
+    poses = design.poses(q)
+    model = s.cable.length(poses[:, 0], poses[:, 1])              # the spring's length in the model
+    # cable = (spring's hook end -> eyelet) + (eyelet -> tangent -> clamp E)
+    rebuilt = p["anchor_distance"] - model + cab.path
+    assert np.allclose(rebuilt, p["cable_length"], rtol=0, atol=1e-12)
+    # the clamp is where the cable ends, carried by the link
+    assert np.allclose(cab.end, s.cable.world(theta, np.array(p["clamp"])), atol=1e-12)
+    # the spring is never shorter than its body, and its hook end never reaches the eyelet
+    assert np.all(model >= REAL.body_length * (1 - 1e-12)) and np.all(model < p["anchor_distance"])
+    tension = REAL.k * (model - REAL.equivalent_free_length)
+    assert p["min_tension"] * (1 - 1e-6) <= tension.min() and tension.max() <= p["max_tension"] * (1 + 1e-6)
+
+
+EDGE_RANGE = (math.radians(-80), math.radians(-10))
+
+
+def test_a_profile_too_near_the_axle_is_refused_with_a_min_tension_that_works(lever):
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=149.2)
+    with pytest.raises(ValueError, match=r"reach [\d.]+ mm into the cable's groove.*min_tension at most") as err:
+        rz.profile_part(d)
+    suggested = float(re.search(r"min_tension at most ([\d.]+) N", str(err.value)).group(1))
+    assert REAL.initial_tension < suggested < 149.2
+    fixed = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=suggested)
+    part = rz.profile_part(fixed)
+    hub = 0.008 / 2 + 0.004
+    prof = fixed.springs[0].cable
+    h = np.sum(part.pitch * prof.normals((part.link_angle - prof.mid) / prof.half), -1)
+    assert h.min() > hub + 0.0015 / 2 and fixed.balance_report().balanced
+
+
+def test_a_pivot_outside_the_profile_warns_at_synthesis_and_is_named_at_export(lever):
+    with pytest.warns(UserWarning, match="the pivot lies outside the profile"):
+        d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(-math.pi / 6, math.pi / 4),
+                                  eyelet=(0.0, 0.1))
+    assert d.balance_report().balanced and d.parameters["min_lever_arm"] < 0
+    h = np.polynomial.chebyshev.chebval(np.linspace(-1, 1, 201), d.springs[0].cable.h)
+    assert d.parameters["min_lever_arm"] == pytest.approx(h.min(), abs=1e-6)
+    with pytest.raises(ValueError, match="the pivot lies outside the profile"):
+        rz.profile_part(d)
+
+
+def test_the_tension_search_finds_a_narrow_feasible_band(lever):
+    # with a 21 mm cable bend only a narrow band of tensions just above the envelope's limit is wrappable
+    # (those profiles are metres across: allowed explicitly by max_size)
+    d = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021,
+                              max_size=50.0)
+    assert d.balance_report().balanced and d.parameters["min_radius_of_curvature"] >= 0.021
+    with pytest.raises(rz.ProfileError, match="none found"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.021)
+    assert REAL.initial_tension <= d.parameters["min_tension"]
+
+
+def test_search_refusals_say_what_was_searched_and_never_advise_below_the_floor(lever):
+    with pytest.raises(rz.ProfileError, match=r"none found: no wrappable profile among \d+ values of min_tension") as err:
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, cable_bend_radius=0.5)
+    assert "lower min_tension" not in str(err.value)
+    for tension in (REAL.initial_tension, 200.0):
+        try:
+            rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=tension, turn=1)
+        except rz.ProfileError as refusal:
+            assert tension > REAL.initial_tension or "lower min_tension" not in str(refusal)
+
+
+def test_absurdly_large_profiles_are_refused_unless_allowed(lever):
+    with pytest.raises(rz.ProfileError, match=r"reach [\d.]+ m from the pivot \(.*°\), more than max_size 2 m"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0)
+    big = rz.noncircular_pulley(lever, spring_model=REAL, angle_range=EDGE_RANGE, min_tension=73.0, max_size=20.0)
+    size = np.max(np.hypot(*big.springs[0].cable.local_points(np.linspace(-1, 1, 2001)).T))
+    assert 2.0 < size <= 20.0 and big.parameters["size"] == pytest.approx(size, rel=1e-3)
+    with pytest.raises(ValueError, match="max_size"):
+        rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, max_size=-1.0)
+
+
+def test_the_flange_covers_the_whole_groove_and_the_core_plate(design):
+    from matplotlib.path import Path as MplPath
+
+    part = rz.profile_part(design, n=400)
+    outline = MplPath(part.flange)
+    assert np.all(outline.contains_points(part.pitch, radius=-1e-9) | outline.contains_points(part.pitch, radius=1e-9))
+    # every point of the cable's pitch curve, the clamped end included, lies inside the flange by >= 1 mm
+    edges = np.concatenate([part.flange, part.flange[:1]])
+    d = np.min([np.abs(_cross(b - a, part.pitch - a)) / np.hypot(*(b - a))
+                for a, b in zip(edges[:-1], edges[1:])], axis=0)
+    assert np.all(outline.contains_points(part.pitch)) and d.min() >= 1e-3 - 1e-12
+    assert np.all(outline.contains_points(part.groove, radius=1e-9) | outline.contains_points(part.groove, radius=-1e-9))

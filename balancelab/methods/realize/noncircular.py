@@ -23,7 +23,10 @@ profile's arc length, not from the formula above.
 """
 from __future__ import annotations
 
+import copy
 import math
+import re
+import warnings
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -32,15 +35,13 @@ from ...core.design import Design
 from ...core.elements import Spring
 from ...core.validation import finite_real, finite_reals, instance_of, planar_point
 from ...mechanisms.base import TreeKinematics
-from ..practice.springs import ExtensionSpring, tensile_strength
+from ..practice.springs import ExtensionSpring
 from .profile import NoncircularProfile, ProfileError
 
 __all__ = ["noncircular_pulley", "spring_limits", "ProfileError"]
 
 #: Chebyshev degrees tried for the energy and the profile (doubling until the tail is round-off)
 _DEGREES = (32, 64, 128, 256)
-#: Shigley's static limits for an extension spring's ends: hook bending, hook torsion (x S_ut)
-_HOOK_BENDING, _HOOK_TORSION = 0.75, 0.40
 
 
 def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) -> dict:
@@ -51,7 +52,8 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     loop, ``sigma = F (16 D K_A / (pi d^3) + 4 / (pi d^2))`` with
     ``K_A = (4 C^2 - C - 1) / (4 C (C - 1))``, at most 75 % of ``S_ut``; torsion at the bend,
     ``tau = 8 F D K_B / (pi d^3)`` with ``K_B = (4 C_2 - 1) / (4 C_2 - 4)``, ``C_2 = 4``, at
-    most 40 % of ``S_ut`` (Shigley's static limits for extension springs).
+    most 40 % of ``S_ut`` (Shigley's static limits for extension springs; in cyclic service
+    the fatigue fractions). A spring made without hooks has only its body's limit.
 
     Parameters
     ----------
@@ -63,7 +65,8 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     Returns
     -------
     dict
-        ``body``, ``hook_bending``, ``hook_torsion`` and ``max_force`` (the smallest), in N.
+        ``body`` and, for a spring with hooks, ``hook_bending`` and ``hook_torsion``, and
+        ``max_force`` (the smallest), in N (:meth:`ExtensionSpring.max_forces`).
 
     Examples
     --------
@@ -73,40 +76,42 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
     True
     """
     instance_of("spring_model", spring_model, ExtensionSpring, "a practice.springs.ExtensionSpring")
-    d, D, C = spring_model.wire_diameter, spring_model.coil_diameter, spring_model.index
-    sut = float(tensile_strength(d, spring_model.material))
-    k_a = (4 * C * C - C - 1) / (4 * C * (C - 1))
-    bending = 16 * D * k_a / (math.pi * d ** 3) + 4 / (math.pi * d * d)   # Pa per N
-    c2 = 4.0
-    torsion = 8 * D * (4 * c2 - 1) / (4 * c2 - 4) / (math.pi * d ** 3)
-    out = {"body": spring_model.max_force(cycles), "hook_bending": _HOOK_BENDING * sut / bending,
-           "hook_torsion": _HOOK_TORSION * sut / torsion}
+    out = dict(spring_model.max_forces(cycles))     # body, and the hooks when the spring has them
     out["max_force"] = min(out.values())
     return out
 
 
 def _pivoted_link(design: Design, spring) -> tuple[int, int]:
-    """``(spring, coordinate)``: the spring's moving body turns about the origin by one coordinate."""
+    """``(spring, coordinate)``: the spring's moving body turns about the origin, its angle one coordinate."""
     instance_of("design", design, Design, "a balancelab Design")
     if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)):
         raise TypeError(f"spring must be the index of a spring of the design, got {spring!r}")
+    if not design.springs:
+        raise ValueError(f"{design.name} has no spring: noncircular_pulley replaces one of its springs")
     if not 0 <= spring < len(design.springs):
         raise ValueError(f"spring must be in 0..{len(design.springs) - 1}, got {spring}")
     s = design.springs[int(spring)]
+    if s.a.body != 0 and s.b.body != 0:
+        raise ValueError(f"{design.name}: spring {spring} joins {design.bodies[s.a.body]} to "
+                         f"{design.bodies[s.b.body]}; it must join the ground (body 0) to the body it pulls")
     body = s.b.body if s.a.body == 0 else s.a.body
-    kin = design.kinematics
-    row = getattr(kin, "angle_matrix", None)
-    fits = (row is not None and isinstance(kin, TreeKinematics) and (s.a.body == 0 or s.b.body == 0)
-            and np.count_nonzero(row[body]) == 1 and float(np.max(row[body])) == 1.0
-            and float(kin.angle_offset[body]) == 0.0)
-    if fits:
-        q = design.sample(16, seed=3)
-        fits = float(np.max(np.abs(design.poses(q)[:, body, :2]))) <= 1e-12
-    if not fits:
-        raise ValueError(f"{design.name}: spring {spring} must join the ground to a body that turns about the "
-                         "origin by one of the coordinates (a lever's link, or a 2R arm's link 1 or the base "
-                         "copy of link 2)")
-    return int(spring), int(np.flatnonzero(row[body])[0])
+    q = design.sample(16, seed=3)
+    poses = np.asarray(design.poses(q))
+    if float(np.max(np.abs(poses[:, body, :2]))) > 1e-9:
+        raise ValueError(f"{design.name}: spring {spring} pulls {design.bodies[body]}, whose frame's origin "
+                         "moves: the body must turn about a ground pivot at the world origin (0, 0)")
+    for coordinate in range(design.dof):
+        if np.allclose(poses[:, body, 2], q[:, coordinate], rtol=0.0, atol=1e-9):
+            return int(spring), coordinate
+    raise ValueError(f"{design.name}: the angle of {design.bodies[body]} (pulled by spring {spring}) must equal "
+                     "one of the coordinates (its absolute angle, no offset), e.g. a driving body of a Linkage")
+
+
+def _linkage_size(design: Design, eyelet) -> float:
+    """The linkage's size (m): its farthest joint, load or spring point from its body's origin, or the eyelet."""
+    points = [j.point_i for j in design.joints] + [j.point_j for j in design.joints]
+    points += [ld.point for ld in design.loads] + [p.point for s in design.springs for p in (s.a, s.b)]
+    return max([math.hypot(*eyelet)] + [math.hypot(*p) for p in points])
 
 
 def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
@@ -120,13 +125,17 @@ def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, f
     return float(lo), float(hi)
 
 
-def _restricted(design: Design, coordinate: int, lo: float, hi: float) -> TreeKinematics:
+def _restricted(design: Design, coordinate: int, lo: float, hi: float):
     """The design's kinematics with the range of one coordinate narrowed to ``(lo, hi)``."""
     kin = design.kinematics
     q_range = np.array(kin.q_range, dtype=float)
     q_range[coordinate] = (lo, hi)
-    return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
-                          angle_offset=kin.angle_offset)
+    if isinstance(kin, TreeKinematics):
+        return TreeKinematics(kin.nbodies, design.joints, kin.angle_matrix, kin.names, q_range,
+                              angle_offset=kin.angle_offset)
+    narrowed = copy.copy(kin)          # any other kinematics (a Linkage's): same solver, narrower range
+    narrowed.q_range = q_range
+    return narrowed
 
 
 def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: float):
@@ -221,48 +230,108 @@ def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> d
     return {"min_radius_of_curvature": float(rc[i]), "min_straight": float(straight[j])}
 
 
-def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, cable_bend_radius):
-    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``."""
+def _kind(err: ProfileError) -> str:
+    """What failed, without the numbers: two tensions failing differently may hold a feasible one between."""
+    return re.sub(r"-?[\d.]+", "#", str(err))[:48]
+
+
+def _at_floor(err: ProfileError, tension: float, floor: float) -> ProfileError:
+    """The refusal at ``tension``; at the spring's initial tension it cannot advise a lower one."""
+    if tension > floor * (1 + 1e-12):
+        return err
+    text = str(err).replace("lower min_tension or use a stiffer spring", "min_tension is already the spring's "
+                            "initial tension (the lowest possible): use a stiffer spring")
+    text = text.replace("change min_tension or the eyelet", "raise min_tension or move the eyelet")
+    text = text.replace("choose a stronger spring or a lower min_tension", "choose a stronger spring (min_tension "
+                        "is already its initial tension)")
+    return ProfileError(text)
+
+
+def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, bounds):
+    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``.
+
+    A geometric grid of tensions, then bisection between neighbours that fail for different
+    reasons (a feasible band may lie between them).
+    """
     start = max(spring_model.initial_tension, 0.02 * limit)
-    best, first_error = None, None
-    for tension in np.geomspace(start, limit, 40):
+    found, failed = {}, {}
+
+    def attempt(tension):
         try:
-            found = _choose_turn(v_coef, k, float(tension), eyelet, turn, lo, hi, cable_bend_radius)
+            built = _choose_turn(v_coef, k, tension, eyelet, turn, lo, hi, bounds)
         except ProfileError as err:
-            first_error = first_error or err
-            continue
-        size = float(np.max(np.hypot(*found[0].local_points(np.linspace(-1.0, 1.0, 201)).T)))
-        if best is None or size < best[2]:
-            best = (float(tension), found, size)
-    if best is None:
-        raise ProfileError(f"no min_tension between {start:.4g} N and {limit:.4g} N (above it the spring is "
-                           f"overstressed at the range's end) gives a "
-                           f"wrappable profile; at {start:.4g} N: {first_error}")
-    return best[:2]
+            failed[tension] = err
+            return False
+        found[tension] = (built, built[1]["size"])
+        return True
+
+    grid = [float(t) for t in np.geomspace(start, limit, 40)] if limit > start else [start]
+    for tension in grid:
+        attempt(tension)
+    for a, b in zip(grid, grid[1:]):
+        if a in failed and b in failed and _kind(failed[a]) != _kind(failed[b]):
+            ka = _kind(failed[a])
+            while b - a > 1e-7 * b:
+                mid = 0.5 * (a + b)
+                if attempt(mid):
+                    break
+                a, b = (mid, b) if _kind(failed[mid]) == ka else (a, mid)
+    if not found:
+        err = _at_floor(failed[start], start, spring_model.initial_tension)
+        raise ProfileError(f"none found: no wrappable profile among {len(failed)} values of min_tension from "
+                           f"{start:.4g} N to {limit:.4g} N (a geometric grid of 40, refined by bisection where "
+                           f"the reason for failing changes; above {limit:.4g} N the spring is overstressed at the "
+                           f"range's end); pass min_tension to try another; at {start:.4g} N: {err}")
+    best = min(found, key=lambda t: found[t][1])
+    return best, found[best][0]
 
 
-def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
     ch, cp, (x, theta, tension) = _profile(v_coef, k, min_tension, eyelet, turn, lo, hi)
     profile = NoncircularProfile(ch, cp, (lo, hi), eyelet, (0.0, 0.0), turn, 0.0)
-    checks = _check_wrappable(profile, cable_bend_radius)
+    checks = _check_wrappable(profile, bounds[0])
+    x = np.linspace(-1.0, 1.0, 401)
+    reach = np.hypot(*profile.local_points(x).T)
+    far = int(np.argmax(reach))
+    size = float(reach[far])
+    if size > bounds[1]:
+        raise ProfileError(f"the profile would reach {size:.3g} m from the pivot (where the cable leaves it at "
+                           f"link angle {math.degrees(profile.mid + profile.half * x[far]):.2f}°), more than max_size "
+                           f"{bounds[1]:.3g} m (by default 4 times the linkage's size); raise min_tension or move "
+                           "the eyelet, or pass a larger max_size")
+    checks["size"] = size
     return profile, checks, theta, tension
 
 
-def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius):
+def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
     """The profile for ``turn``, or (``turn=None``) for the wrap that holds the pivot inside, else the other."""
     if turn is not None:
         if isinstance(turn, bool) or turn not in (1, -1):
             raise ValueError(f"turn must be 1 (counter-clockwise), -1 (clockwise) or None, got {turn!r}")
-        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, cable_bend_radius)
+        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, bounds)
     mean_slope = cheb.chebval(np.linspace(-1, 1, 101), cheb.chebder(v_coef)).mean()
     first = -1 if mean_slope > 0 else 1      # h = -turn V'/T > 0: the pivot inside the profile
     try:
-        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, cable_bend_radius)
+        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, bounds)
     except ProfileError as err:
         try:
-            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, cable_bend_radius)
+            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, bounds)
         except ProfileError:
             raise err from None
+
+
+def _pivot_inside(profile: NoncircularProfile) -> float:
+    """The cable line's smallest distance from the pivot (m); warns when the pivot lies outside the profile."""
+    x = np.linspace(-1.0, 1.0, 2001)
+    h = cheb.chebval(x, profile.h)
+    i = int(np.argmin(h))
+    if h[i] <= 0:
+        warnings.warn(f"the pivot lies outside the profile (at link angle "
+                      f"{math.degrees(profile.mid + profile.half * x[i]):.2f}° the cable's line passes "
+                      f"{1000 * -h[i]:.3g} mm beyond it): the design balances, but the pulley needs an arm out to its "
+                      "axle and profile_part cannot cut it; the other turn, another eyelet or min_tension may keep "
+                      "the pivot inside", UserWarning, stacklevel=3)
+    return float(h[i])
 
 
 def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
@@ -270,21 +339,24 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
     if min_tension < spring_model.initial_tension:
         raise ProfileError(f"min_tension {min_tension:.4g} N is below the spring's initial tension "
                            f"{spring_model.initial_tension:.4g} N: the coils would close and the cable go slack")
-    part = min(("body", "hook_bending", "hook_torsion"), key=limits.get)
+    part = min((p for p in limits if p != "max_force"), key=limits.get)
     if max_tension > limits["max_force"]:
         raise ProfileError(
             f"the spring is overstressed: its largest tension {max_tension:.4g} N exceeds what its "
             f"{part.replace('_', ' ')} allows, {limits['max_force']:.4g} N, by "
-            f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring or a lower min_tension")
+            f"{100 * (max_tension / limits['max_force'] - 1):.3g} %; choose a stronger spring"
+            + (" or a lower min_tension" if min_tension > spring_model.initial_tension * (1 + 1e-12) else
+               " (min_tension is already its initial tension)"))
     stroke = (max_tension - min_tension) / k
     return {"max_tension": max_tension, "stroke": stroke, "allowable_force": limits["max_force"],
-            "limiting_part": part, "max_stress": float(spring_model.stress(max_tension)),
+            "limiting_part": part, "max_stress": float(spring_model.stresses(max_tension)[part]),
             "max_length": spring_model.equivalent_free_length + max_tension / k}
 
 
 def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: ExtensionSpring, angle_range=None,
                        min_tension: float | None = None, eyelet=None, turn: int | None = None,
-                       cable_bend_radius: float = 0.005, cycles: float | None = None) -> Design:
+                       cable_bend_radius: float = 0.005, cycles: float | None = None,
+                       max_size: float | None = None) -> Design:
     """Replace a spring by a real spring whose cable wraps a non-circular pulley on the body it pulls.
 
     The profile is synthesized so that the real spring balances everything else of the
@@ -323,14 +395,29 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         Smallest radius (m) the cable may be bent to, > 0; the profile must not be sharper.
     cycles : float, optional
         Load cycles for the spring's allowable stress (static when omitted).
+    max_size : float, optional
+        Largest distance (m) of the profile from the pivot, > 0; default 4 times the
+        linkage's size (the farthest joint, load or spring attachment point from its body's
+        origin, or the eyelet from the pivot). Larger profiles are refused.
 
     Returns
     -------
     Design
         ``parameters`` hold ``k``, ``free_length``, ``initial_tension``, ``min_tension``,
         ``max_tension`` (N), ``stroke`` (m), ``max_stress`` (Pa), ``allowable_force`` (N) and
-        ``limiting_part``, ``min_radius_of_curvature`` (m), ``cable_length`` (m), ``lo``, ``hi`` (rad),
-        of the spring just replaced; the design's range of that coordinate is ``(lo, hi)``.
+        ``limiting_part`` (the part that fails first: ``body``, ``hook_torsion`` or
+        ``hook_bending``; ``max_stress`` is its stress), ``min_radius_of_curvature`` (m),
+        ``min_lever_arm`` (m, the cable line's smallest distance from the pivot; not positive
+        when the pivot lies outside the profile, which also warns), ``size`` (m, the
+        profile's farthest point from the pivot), ``lo``, ``hi`` (rad), and the build data:
+        ``eyelet`` (world, m), ``spring_anchor`` (world, m: where the spring's far end is fixed, on the line from the pivot through
+        the eyelet, ``anchor_distance`` beyond the eyelet: the longest spring plus a coil
+        diameter), ``clamp`` (the cable's end ``E`` in the link's frame, m) and
+        ``cable_length`` (m, the cable from the spring's hook end through the eyelet to
+        ``E``), so that the spring's length is
+        ``anchor_distance + path - cable_length`` with ``path`` the cable's path from the
+        eyelet to ``E`` (:meth:`.NoncircularProfile.cable`); all of the spring just
+        replaced. The design's range of that coordinate is ``(lo, hi)``.
 
     Raises
     ------
@@ -356,6 +443,9 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
     ground = old.a if old.a.body == 0 else old.b
     eyelet = ground.point if eyelet is None else planar_point("eyelet (m)", eyelet)
     cable_bend_radius = finite_real("cable_bend_radius (m)", cable_bend_radius, positive=True)
+    max_size = 4 * _linkage_size(design, eyelet) if max_size is None else \
+        finite_real("max_size (m)", max_size, positive=True)
+    bounds = (cable_bend_radius, max_size)
     k = spring_model.k
     limit = spring_limits(spring_model, cycles)["max_force"]
     v_coef = _energy_series(design, spring, coordinate, lo, hi)
@@ -365,13 +455,19 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         top = math.sqrt(max(limit ** 2 - 2 * k * exchange, 0.0))   # highest smallest tension within the limit
         _check_spring(spring_model, k, spring_model.initial_tension, math.hypot(spring_model.initial_tension,
                       math.sqrt(2 * k * exchange)), cycles)
-        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, cable_bend_radius)
+        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, bounds)
     else:
         min_tension = finite_real("min_tension (N)", min_tension, positive=True)
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
-        found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, cable_bend_radius)
+        try:
+            found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds)
+        except ProfileError as err:
+            raise _at_floor(err, min_tension, spring_model.initial_tension) from None
     profile, checks, theta, tension = found
-    sp_checks = _check_spring(spring_model, k, min_tension, float(np.max(tension)), cycles)
+    checks["min_lever_arm"] = _pivot_inside(profile)
+    # the largest tension is where the rest's energy is lowest (the range's ends included, not only the nodes)
+    largest = max(math.hypot(min_tension, math.sqrt(2 * k * exchange)), float(np.max(tension)))
+    sp_checks = _check_spring(spring_model, k, min_tension, largest, cycles)
     return _assemble(design, (spring, coordinate), old, spring_model, profile, theta, tension,
                      {**checks, **sp_checks, "min_tension": min_tension, "lo": lo, "hi": hi})
 
@@ -384,6 +480,11 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
                                  profile.turn, cable_length)
     end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
+    # the spring hangs from a ground anchor on the line pivot -> eyelet, beyond the eyelet by the longest
+    # spring plus a coil diameter; its hook end pulls the cable through the eyelet to the clamp E
+    away = np.asarray(profile.anchor) / math.hypot(*profile.anchor)
+    reach = numbers["max_length"] + spring_model.coil_diameter
+    spring_anchor = tuple(float(v) for v in np.add(profile.pivot, profile.anchor) + reach * away)
     spring, coordinate = which
     body = old.b.body if old.a.body == 0 else old.a.body
     new = Spring(k, l_eq, (0, profile.anchor), (body, end), name=old.name or f"k{spring + 1}",
@@ -392,7 +493,9 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     springs[spring] = new
     lo, hi = profile.angle_range
     params = {**design.parameters, "k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension,
-              "cable_length": cable_length, **numbers}
+              **numbers, "cable_length": reach + cable_length, "spring_anchor": spring_anchor,
+              "eyelet": tuple(float(v) for v in np.add(profile.pivot, profile.anchor)),
+              "anchor_distance": reach, "clamp": end}
     labels = dict(design.labels)
     if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
         labels["eyelet"] = (0, profile.anchor)

@@ -78,8 +78,9 @@ class NoncircularProfile(CablePath):
     turn : {1, -1}
         1: the cable wraps counter-clockwise round the profile; -1: clockwise.
     cable_length : float
-        Cable from the spring's end to the clamp ``E`` (m): the spring's length is the
-        path's length minus this.
+        The path's length minus the spring's length (m): the cable from the spring's end
+        to the clamp ``E`` less the spring's anchor distance beyond the eyelet (the design's
+        ``parameters`` give both, ``cable_length`` and ``anchor_distance``).
 
     Examples
     --------
@@ -168,6 +169,9 @@ class NoncircularProfile(CablePath):
             the range the profile covers.
         """
         theta = np.asarray(theta, dtype=float)
+        outside = ~(np.abs(theta - self.mid) <= self.half * (1 + _EDGE))     # NaN counts as outside
+        if np.any(outside):
+            self._refuse(theta[outside] if theta.ndim else theta)
         s = self._canonical(theta)
         x = np.clip((theta - self.mid) / self.half, -1.0, 1.0)
         for _ in range(60):
@@ -181,12 +185,14 @@ class NoncircularProfile(CablePath):
                 break
         bad = np.abs(x) > 1 + _EDGE
         if np.any(bad) or not np.all(np.isfinite(x)):
-            where = theta[bad | ~np.isfinite(x)] if theta.ndim else theta
-            lo, hi = np.degrees(self.angle_range)
-            raise ProfileError(f"the cable's tangent point leaves the profile at link angle "
-                               f"{math.degrees(float(np.ravel(where)[0])):.3f}°: the profile covers "
-                               f"{lo:.3f}° to {hi:.3f}° only; outside it the spring does not balance")
+            self._refuse(theta[bad | ~np.isfinite(x)] if theta.ndim else theta)
         return x
+
+    def _refuse(self, where) -> None:
+        lo, hi = np.degrees(self.angle_range)
+        raise ProfileError(f"the cable's tangent point leaves the profile at link angle "
+                           f"{math.degrees(float(np.ravel(where)[0])):.3f}°: the profile covers "
+                           f"{lo:.3f}° to {hi:.3f}° only; outside it the spring does not balance")
 
     def cable(self, theta) -> CableGeometry:
         """The cable's geometry at link angles ``theta`` (rad): tangent from the eyelet plus wrapped arc.

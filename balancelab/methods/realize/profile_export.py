@@ -88,6 +88,39 @@ def _even_in_arc_length(prof: NoncircularProfile, n: int) -> np.ndarray:
     return np.interp(np.linspace(s[0], s[-1], n), s, dense)
 
 
+def _lower_tension(design: Design, spring: int, prof: NoncircularProfile, x, h, need: float) -> float:
+    """The largest ``min_tension`` (N) whose profile keeps every cable line ``need`` from the pivot.
+
+    The torque ``T h`` is fixed by the load; lowering the smallest tension by ``dm`` (``T^2`` drops
+    by the same ``m^2 - m'^2`` everywhere) scales ``h`` by ``T / T'``.
+    """
+    s, p = design.springs[spring], design.parameters
+    theta = prof.mid + prof.half * x
+    tension = s.k * (prof.cable(theta).path - prof.cable_length - s.free_length)
+    m2 = float(np.min((tension * h / need) ** 2 - tension ** 2)) + p.get("min_tension", float(tension.min())) ** 2
+    return math.sqrt(m2) if m2 > 0 else 0.0
+
+
+def _check_room(design: Design, spring: int, prof: NoncircularProfile, x, h, need: float) -> None:
+    """ValueError unless the axle's boss and half the cable fit inside every cable line."""
+    i = int(np.argmin(h))
+    at = math.degrees(prof.mid + prof.half * x[i])
+    if h[i] <= 0:
+        raise ValueError(f"the pivot lies outside the profile: at link angle {at:.2f}° the cable's line passes "
+                         f"{1000 * -h[i]:.3g} mm beyond the pivot, so no axle at the pivot can sit inside this "
+                         "part; re-synthesize with the other turn, another eyelet or min_tension")
+    if h[i] - need > 0:
+        return
+    m = _lower_tension(design, spring, prof, x, h, need)
+    f_i = design.parameters.get("initial_tension", 0.0)
+    hint = (f"re-synthesize with min_tension at most {math.floor(100 * m) / 100:.2f} N (a lower tension moves the cable's line away "
+            "from the pivot)" if m > f_i else "a lower min_tension cannot help (the spring's initial tension "
+            f"{f_i:.4g} N is the floor): move the eyelet")
+    raise ValueError(f"the axle's boss and half the cable ({1000 * need:.3g} mm from the pivot) reach "
+                     f"{1000 * (need - h[i]):.3g} mm into the cable's groove at link angle {at:.2f}°: use a smaller "
+                     f"axle_diameter, boss or cable_diameter, or {hint}")
+
+
 def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diameter: float = 0.008,
                  cable_diameter: float = 0.0015, flange: float = 0.004, boss: float = 0.004) -> ProfilePart:
     """The outlines of the non-circular pulley of ``design``'s spring ``spring``, ready to cut.
@@ -138,13 +171,14 @@ def profile_part(design: Design, spring: int = 0, *, n: int = 2000, axle_diamete
     pitch, normal = prof.local_points(x), prof.normals(x)
     h = np.sum(pitch * normal, -1)            # distance of each tangent line from the pivot
     hub = axle / 2 + boss
-    room = float(np.min(h)) - cable / 2 - hub
-    if room <= 0:
-        raise ValueError(f"the axle's boss (radius {1000 * hub:.3g} mm) reaches {1000 * -room:.3g} mm into the "
-                         "cable's groove: use a smaller axle_diameter, boss or cable_diameter, or a profile "
-                         "farther from the pivot")
+    _check_room(design, spring, prof, x, h, hub + cable / 2)
     groove = _closed(pitch - cable / 2 * normal, hub)
-    outer = _closed(pitch + flange * normal, hub)
+    # the flange covers the groove past both ends of the pitch curve by its height, and the core plate
+    tangent = np.stack([-normal[:, 1], normal[:, 0]], -1)
+    caps = np.concatenate([pitch[[0, -1]] + flange * (normal[[0, -1]] + sign * tangent[[0, -1]])
+                           for sign in (-1.0, 1.0)] + [pitch[[0, -1]] - cable / 2 * normal[[0, -1]]
+                                                       + sign * flange * tangent[[0, -1]] for sign in (-1.0, 1.0)])
+    outer = _closed(np.concatenate([pitch + flange * normal, caps, groove]), hub)
     return ProfilePart(pitch, groove, outer, axle, prof.mid + prof.half * x)
 
 
