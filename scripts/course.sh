@@ -39,8 +39,10 @@ case "$cmd" in
         ;;
     test)
         setup
-        log "running the test suite"
-        "$PY" -m pytest "$@"
+        log "running the test suite on ${BALANCELAB_TEST_WORKERS:-2} workers"
+        # One worker builds the site and runs the browser tests (the "site" group, see tests/conftest.py),
+        # the other takes the library, labs and grading tests. BALANCELAB_TEST_WORKERS=0 runs in one process.
+        "$PY" -m pytest -n "${BALANCELAB_TEST_WORKERS:-2}" --dist loadgroup "$@"
         ;;
     bench)
         setup

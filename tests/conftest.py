@@ -160,8 +160,16 @@ def personal_r_c(student_id: str) -> str:
             "link_mass=_n['link_mass']).parameters['r_c']")
 
 
+#: Modules that build the site or read it, or drive Chromium: one xdist worker runs them in this
+#: order (``--dist loadgroup`` in scripts/course.sh) while the other takes everything else.
+SITE_GROUP = ("test_book.py", "test_site_nav.py", "test_lab_browser.py", "test_a11y.py")
+
+
 def pytest_collection_modifyitems(session, config, items):
-    """tests/test_a11y.py checks the site that tests/test_book.py builds: run it last."""
-    late = [item for item in items if item.path.name == "test_a11y.py"]
-    if late:
-        items[:] = [item for item in items if item.path.name != "test_a11y.py"] + late
+    """Site and browser tests run on one worker, in :data:`SITE_GROUP` order (a11y last: it checks the
+    site that tests/test_book.py builds)."""
+    site = sorted((item for item in items if item.path.name in SITE_GROUP),
+                  key=lambda item: SITE_GROUP.index(item.path.name))
+    for item in site:
+        item.add_marker(pytest.mark.xdist_group("site"))
+    items[:] = [item for item in items if item.path.name not in SITE_GROUP] + site
