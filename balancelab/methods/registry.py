@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 from ..core.design import Design
+from ..core.validation import positive_int
 
 __all__ = ["Example", "example", "register", "examples", "FAMILIES"]
 
@@ -101,8 +102,7 @@ def register(name: str, title: str, factory: Callable[..., Design], *, chapter: 
     """
     if not name or not isinstance(name, str):
         raise TypeError(f"name must be a non-empty str, got {name!r}")
-    if isinstance(chapter, bool) or not isinstance(chapter, int) or chapter < 1:
-        raise ValueError(f"chapter must be a chapter number >= 1, got {chapter!r}")
+    chapter = positive_int("chapter", chapter)
     entry = Example(name, title, chapter, factory, bool(expected_balanced), tuple(args),
                     dict(kwargs or {}), _family(factory.__module__), next(_DECLARED))
     old = _REGISTRY.get(name)
