@@ -32,42 +32,46 @@ namespaces (``bl.lecture``, ``bl.singh``, ``bl.lustig``, ``bl.deepak``, ``bl.rea
 ``catalog`` and the viz functions. matplotlib, scipy, sympy and ipywidgets are imported
 only when something that needs them is first used.
 """
-import importlib
+import importlib as _importlib
 
 from .core import (BALANCE_TOLERANCE, Attachment, BalanceReport, Design, Energy, G, Joint, Kinematics, Load,
                    Pulley, Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
 from .mechanisms import (ExplicitKinematics, FourBar, FourBarKinematics, PeaucellierKinematics, TreeKinematics,
                          fourbar_joints, lever_kinematics, scissors_kinematics, serial_2r_kinematics)
-from .methods import lecture, singh
+from .mechanisms.linkage import Linkage
+from .methods import deepak, lecture, lustig, practice, realize, singh
+from .methods.general import InfeasibleDesign, balance
 from .course.catalog import catalog
 
 __version__ = "0.2.0"
 
-#: top-level names imported on first use: name -> module that defines it
+#: the names that need matplotlib or ipywidgets, imported on first use: name -> module that defines it
 _LAZY = {
-    "lustig": "balancelab.methods.lustig", "deepak": "balancelab.methods.deepak",
-    "realize": "balancelab.methods.realize", "practice": "balancelab.methods.practice",
     "viz": "balancelab.viz", "course": "balancelab.course",
     **{name: "balancelab.viz" for name in ("draw", "energy_plot", "lever_valley", "family_plot",
                                            "cognates_plot", "animate", "animate_parameter", "explore",
                                            "Explorer")},
-    "Linkage": "balancelab.mechanisms.linkage",
-    **{name: "balancelab.methods.general" for name in ("balance", "InfeasibleDesign")},
 }
 
 __all__ = [
+    # core
     "BALANCE_TOLERANCE", "Attachment", "BalanceReport", "Design", "Energy", "G", "Joint", "Kinematics",
     "Load", "Pulley", "Spring", "SymbolicParts", "UnreachableConfiguration", "gravity_load",
-    "ExplicitKinematics", "FourBar", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics", "fourbar_joints",
-    "lever_kinematics", "scissors_kinematics", "serial_2r_kinematics",
-    "lecture", "singh", "catalog", *_LAZY,
+    # mechanisms
+    "ExplicitKinematics", "FourBar", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics",
+    "fourbar_joints", "lever_kinematics", "scissors_kinematics", "serial_2r_kinematics", "Linkage",
+    # methods
+    "deepak", "lecture", "lustig", "practice", "realize", "singh", "balance", "InfeasibleDesign",
+    # viz and course (imported on first use)
+    "viz", "draw", "energy_plot", "lever_valley", "family_plot", "cognates_plot", "animate",
+    "animate_parameter", "explore", "Explorer", "course", "catalog",
 ]
 
 
 def __getattr__(name: str):
-    """Import the heavier parts (scipy, matplotlib, ipywidgets) on first use."""
+    """Import the parts that need matplotlib or ipywidgets on first use."""
     if name in _LAZY:
-        module = importlib.import_module(_LAZY[name])
+        module = _importlib.import_module(_LAZY[name])
         value = module if module.__name__.endswith("." + name) else getattr(module, name)
         globals()[name] = value
         return value
@@ -75,4 +79,4 @@ def __getattr__(name: str):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(__all__))
+    return sorted(set(__all__) | {n for n in globals() if n.startswith("__") or not n.startswith("_")})

@@ -392,3 +392,26 @@ def test_a_crank_that_cannot_turn_fully_keeps_its_range():
     assert hi - lo < 2 * np.pi
     q = np.array([[0.5 * (lo + hi)]])
     assert d.reachable(q).all() and not d.reachable(q + 2 * np.pi).all()
+
+
+@settings(max_examples=300, deadline=None)
+@given(value=st.one_of(st.integers(-10**6, 10**6), st.floats(allow_nan=True), st.booleans(), st.none(),
+                       st.text(max_size=3), st.integers(-5, 20).map(np.int64)),
+       minimum=st.integers(0, 5), span=st.one_of(st.none(), st.integers(0, 10)))
+def test_the_integer_validator_accepts_exactly_the_integers_in_range(value, minimum, span):
+    """``positive_int``, the package's one integer check: an integer in range comes back as an ``int``;
+    anything else raises, ``TypeError`` for a non-integer and ``ValueError`` for an integer out of
+    range, and the message names the parameter and the range."""
+    from balancelab.core.validation import positive_int
+
+    maximum = None if span is None else minimum + span
+    is_int = isinstance(value, (int, np.integer)) and not isinstance(value, bool)
+    in_range = is_int and value >= minimum and (maximum is None or value <= maximum)
+    if in_range:
+        out = positive_int("count", value, minimum, maximum)
+        assert type(out) is int and out == value
+        return
+    with pytest.raises(ValueError if is_int else TypeError) as err:
+        positive_int("count", value, minimum, maximum)
+    assert str(err.value).startswith("count must be an integer")
+    assert (f">= {minimum}" if maximum is None else f"in {minimum}..{maximum}") in str(err.value)

@@ -121,6 +121,23 @@ def test_top_level_namespace_is_deliberate():
     assert bl.lustig.solve and bl.singh.lacoste_lever and bl.deepak.technique2
 
 
+def test_namespaces_show_only_public_names_listed_literally():
+    """``dir()`` shows no helper (``_LAZY``, ``importlib``); every ``__all__`` is a literal list of
+    strings a static tool can read; a method family does not re-export another layer's class."""
+    assert not [n for n in dir(bl) if n == "importlib" or (n.startswith("_") and not n.startswith("__"))]
+    for package in ("", "mechanisms", "methods", "viz", "course"):
+        path = Path(bl.__file__).parent / package / "__init__.py"
+        tree = ast.parse(path.read_text())
+        (value,) = [node.value for node in tree.body if isinstance(node, ast.Assign)
+                    and any(getattr(t, "id", None) == "__all__" for t in node.targets)]
+        assert isinstance(value, ast.List) and all(isinstance(e, ast.Constant) and isinstance(e.value, str)
+                                                   for e in value.elts), f"{path}: __all__ is not a literal"
+    import balancelab.methods as methods
+
+    assert {"general", "practice"} <= set(methods.__all__)
+    assert "FourBar" not in bl.deepak.__all__ and not hasattr(bl.deepak, "FourBar")
+
+
 def test_import_is_light():
     import subprocess
     import sys

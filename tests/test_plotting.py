@@ -316,12 +316,12 @@ def test_energy_plot_marks_a_configuration():
 
 def test_counts_and_energy_limits_refuse_nonsense():
     d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
-    for n in (0, 1, 2.5, True):
-        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+    for n, error in ((0, ValueError), (1, ValueError), (2.5, TypeError), (True, TypeError)):
+        with pytest.raises(error, match="n must be an integer >= 2"):     # the one integer check
             E.energy_plot(d, n=n)
-        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+        with pytest.raises(error, match="n must be an integer >= 2"):
             S.lever_valley(n=n)
-        with pytest.raises(ValueError, match="n must be an integer >= 2"):
+        with pytest.raises(error, match="n must be an integer >= 2"):
             S.cognates_plot([d], point="p", n=n)
     with pytest.raises(ValueError, match="lo"):
         E.energy_limits(float("nan"), 1.0)

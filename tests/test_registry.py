@@ -44,3 +44,27 @@ def test_an_example_outside_a_method_family_is_refused():
     with pytest.raises(ValueError, match="chapter"):
         registry.register("outsider", "no chapter", bl.singh.lacoste_lever, chapter=0)
     assert "outsider" not in registry.examples()
+
+
+def test_course_order_within_a_module_is_its_source_order_without_frame_inspection():
+    """Stacked and consecutive ``@example`` decorators keep their top-to-bottom order; the registry
+    reads no call frames and imports the families explicitly (``balancelab.methods``)."""
+    import inspect
+    import re
+
+    source = inspect.getsource(registry)
+    assert "_getframe" not in source and "importlib" not in source
+    names = list(registry.examples())
+    by_module: dict[str, list[str]] = {}
+    for name, ex in registry.examples().items():
+        by_module.setdefault(ex.function.__module__, []).append(name)
+    checked = 0
+    for module, members in by_module.items():
+        text = inspect.getsource(__import__(module, fromlist=["_"]))
+        declared = [m for m in re.findall(r'@example\(\s*"(\w+)"', text) if m in members]
+        if len(declared) > 1:
+            chapters = [registry.examples()[m].chapter for m in declared]
+            same = [m for m, c in zip(declared, chapters) if c == chapters[0]]
+            assert sorted(same, key=names.index) == same, module
+            checked += len(same) > 1
+    assert checked >= 3

@@ -9,6 +9,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from balancelab import Spring
+import balancelab as bl
 from balancelab import deepak as sf
 from conftest import assert_exactly_balanced
 
@@ -71,7 +72,7 @@ def test_loaded_fourbar_is_not_balanced():
 
 
 def test_loaded_fourbar_balanced_in_the_extreme_case_E_on_D_and_K_on_A():
-    fb = sf.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, (0.0, 0.0))
+    fb = bl.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, (0.0, 0.0))
     d = sf.spring_loaded_fourbar(fb, FB.A, KL)
     V = d.potential_energy(d.sample(1000)).total
     assert np.ptp(V) <= 1e-12 * np.mean(V)
@@ -257,13 +258,13 @@ def test_slider_crank_stays_on_its_line_and_2r_needs_no_rocker():
 
 def test_bad_input():
     with pytest.raises(ValueError, match="cannot assemble"):
-        sf.FourBar((0, 0), (1.0, 0), 0.1, 0.2, 0.3, (0.1, 0.1))
+        bl.FourBar((0, 0), (1.0, 0), 0.1, 0.2, 0.3, (0.1, 0.1))
     with pytest.raises(ValueError, match="coincide"):
-        sf.FourBar((0, 0), (0, 0), 0.1, 0.2, 0.3, (0.1, 0.1))
+        bl.FourBar((0, 0), (0, 0), 0.1, 0.2, 0.3, (0.1, 0.1))
     with pytest.raises(ValueError, match="branch"):
-        sf.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=0)
+        bl.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=0)
     with pytest.raises(ValueError, match="crank"):
-        sf.FourBar((0, 0), (0.4, 0), -0.1, 0.35, 0.3, (0.1, 0.1))
+        bl.FourBar((0, 0), (0.4, 0), -0.1, 0.35, 0.3, (0.1, 0.1))
     # K on the parallelogram's pivot
     for base, piv in (("A", FB.A), ("B", FB.B)):
         with pytest.raises(ValueError, match="base pivot"):
@@ -272,7 +273,7 @@ def test_bad_input():
         sf.technique3(FB, FB.A, KL, "A", "A", 0.1)
     # degenerate coupler triangle
     for E in ((0.0, 0.0), (FB.coupler, 0.0)):
-        fb = sf.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, E)
+        fb = bl.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, E)
         with pytest.raises(ValueError, match="degenerate coupler triangle"):
             sf.technique3(fb, K, KL, "A", "A", 0.1)
     with pytest.raises(ValueError, match="'A' or 'B'"):
@@ -300,7 +301,7 @@ def loaded_fourbars(draw):
     E = (draw(st.floats(-0.3, 0.5)), draw(st.floats(-0.3, 0.3)))
     assume(math.hypot(*E) > 0.01 and math.hypot(E[0] - r3, E[1]) > 0.01)
     try:
-        fb = sf.FourBar((0.0, 0.0), B, r2, r3, r4, E, branch=draw(st.sampled_from([1, -1])))
+        fb = bl.FourBar((0.0, 0.0), B, r2, r3, r4, E, branch=draw(st.sampled_from([1, -1])))
         lo, hi = fb.kinematics.q_range[0]
     except ValueError:
         assume(False)
@@ -347,7 +348,7 @@ def test_random_fourbars_technique1(fbk, k_l, l1, l2):
 
 @pytest.mark.parametrize("branch", [1, -1])
 def test_fast_positions_match_the_kinematics(branch):
-    fb = sf.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, FB.coupler_point, branch)
+    fb = bl.FourBar(FB.A, FB.B, FB.crank, FB.coupler, FB.rocker, FB.coupler_point, branch)
     q = np.linspace(*fb.kinematics.q_range[0], 1000)
     D, C, E, ok = sf.fourbar_positions(fb, q)
     st_ = fb.state(q)
@@ -356,7 +357,7 @@ def test_fast_positions_match_the_kinematics(branch):
         assert np.max(np.abs(got[:, 0] + 1j * got[:, 1] - want)) < 1e-12
     assert float(sf.loop_closure_error(fb, q).max()) < 1e-14
     # a configuration the linkage cannot reach is flagged, not silently closed
-    dr = sf.FourBar((0, 0), (0.3, 0), 0.25, 0.1, 0.1, (0.05, 0.02))  # crank cannot turn fully
+    dr = bl.FourBar((0, 0), (0.3, 0), 0.25, 0.1, 0.1, (0.05, 0.02))  # crank cannot turn fully
     lo, hi = dr.kinematics.q_range[0]
     bad = hi + 0.3 if hi + 0.3 < lo + 2 * np.pi else lo - 0.3
     assert np.isinf(sf.loop_closure_error(dr, [bad]))[0]
@@ -416,5 +417,5 @@ def test_nonsense_lengths_and_family_values_are_refused():
         with pytest.raises(ValueError, match="h_values"):
             sf.technique3_family(FB, K, KL, "A", "A", bad)
     with pytest.raises(ValueError, match="branch"):
-        sf.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=True)
-    assert sf.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=-1.0).branch == -1
+        bl.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=True)
+    assert bl.FourBar((0, 0), (0.4, 0), 0.1, 0.35, 0.3, (0.1, 0.1), branch=-1.0).branch == -1

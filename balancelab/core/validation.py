@@ -98,18 +98,26 @@ def body_index(name: str, value, nbodies: int | None = None, *, moving: bool = F
     return int(value)
 
 
-def positive_int(name: str, value, minimum: int = 1) -> int:
-    """Return ``value`` as an int ``>= minimum``, or raise a clear error naming ``name``.
+def positive_int(name: str, value, minimum: int = 1, maximum: int | None = None) -> int:
+    """Return ``value`` as an int in ``minimum..maximum``, or raise a clear error naming ``name``.
+
+    The one integer check of the package: a value that is not an integer (``2.5``, ``"3"``,
+    ``True``) is a ``TypeError``, an integer out of range a ``ValueError``; both name the range.
 
     Examples
     --------
     >>> positive_int("n", 5)
     5
+    >>> positive_int("index", 4, 1, 3)
+    Traceback (most recent call last):
+    ...
+    ValueError: index must be an integer in 1..3, got 4
     """
+    want = f"an integer >= {minimum}" if maximum is None else f"an integer in {minimum}..{maximum}"
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    if value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value}")
+        raise TypeError(f"{name} must be {want}, got {value!r}")
+    if value < minimum or (maximum is not None and value > maximum):
+        raise ValueError(f"{name} must be {want}, got {value}")
     return int(value)
 
 

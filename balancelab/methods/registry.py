@@ -7,19 +7,20 @@ gallery, the course order and the marks of the deliberately unbalanced examples 
 come from here. Layer: methods; imports only ``core``.
 
 Course order: examples are sorted by ``chapter`` (of the course book), then by the
-order of the method families in :data:`FAMILIES`, then by where they are declared: the
-modules in the order the family's ``__init__`` imports them, and within a module from
-top to bottom (stacked decorators included).
+order of the method families in :data:`FAMILIES`, then by the order in which the
+declarations run: the modules in the order the family's ``__init__`` imports them, and
+within a module from top to bottom (stacked decorators included: the decorator calls run
+top to bottom, before the decorations).
 """
 from __future__ import annotations
 
 import dataclasses
-import importlib
-import sys
+import itertools
 from dataclasses import dataclass, field
 from typing import Callable
 
 from ..core.design import Design
+from ..core.validation import positive_int
 
 __all__ = ["Example", "example", "register", "examples", "FAMILIES"]
 
@@ -27,15 +28,7 @@ __all__ = ["Example", "example", "register", "examples", "FAMILIES"]
 FAMILIES = ("lecture", "singh", "realize", "lustig", "deepak", "general", "practice")
 
 _REGISTRY: dict[str, "Example"] = {}
-_MODULES: dict[str, int] = {}  # module -> the order in which it first registered
-
-
-def _where(depth: int) -> tuple:
-    """Sort key of a declaration: (module order, line, count) of the caller ``depth`` frames up."""
-    frame = sys._getframe(depth + 1)
-    module = frame.f_globals.get("__name__", "")
-    _MODULES.setdefault(module, len(_MODULES))
-    return (_MODULES[module], frame.f_lineno, len(_REGISTRY))
+_DECLARED = itertools.count()        # declarations, in the order they run
 
 
 @dataclass(frozen=True)
@@ -65,7 +58,7 @@ class Example:
     args: tuple = ()
     kwargs: dict = field(default_factory=dict)
     family: str = ""
-    index: tuple = ()
+    index: int = 0
 
     def __call__(self) -> Design:
         return self.function(*self.args, **self.kwargs)
@@ -84,8 +77,7 @@ def _family(module: str) -> str:
 
 
 def register(name: str, title: str, factory: Callable[..., Design], *, chapter: int,
-             expected_balanced: bool = True, args: tuple = (), kwargs: dict | None = None,
-             _depth: int = 1) -> None:
+             expected_balanced: bool = True, args: tuple = (), kwargs: dict | None = None) -> None:
     """Register a worked example built by ``factory(*args, **kwargs)``.
 
     Parameters
@@ -110,10 +102,9 @@ def register(name: str, title: str, factory: Callable[..., Design], *, chapter: 
     """
     if not name or not isinstance(name, str):
         raise TypeError(f"name must be a non-empty str, got {name!r}")
-    if isinstance(chapter, bool) or not isinstance(chapter, int) or chapter < 1:
-        raise ValueError(f"chapter must be a chapter number >= 1, got {chapter!r}")
+    chapter = positive_int("chapter", chapter)
     entry = Example(name, title, chapter, factory, bool(expected_balanced), tuple(args),
-                    dict(kwargs or {}), _family(factory.__module__), _where(_depth))
+                    dict(kwargs or {}), _family(factory.__module__), next(_DECLARED))
     old = _REGISTRY.get(name)
     if old is not None and (old.function, old.args, old.kwargs) != (factory, entry.args, entry.kwargs):
         raise ValueError(f"a worked example named {name!r} is already registered")
@@ -132,12 +123,11 @@ def example(name: str, title: str, *, chapter: int, expected_balanced: bool = Tr
     >>> examples()["lacoste_lever"].kwargs
     {'weight': 10.0, 'length': 0.5, 'a_x': 0.2, 'b_y': 0.3}
     """
-    where = _where(1)
+    order = next(_DECLARED)   # the decorator line runs now, top to bottom; the decoration later
 
     def decorate(fn):
-        register(name, title, fn, chapter=chapter, expected_balanced=expected_balanced, kwargs=kwargs,
-                 _depth=1)
-        _REGISTRY[name] = dataclasses.replace(_REGISTRY[name], index=where)
+        register(name, title, fn, chapter=chapter, expected_balanced=expected_balanced, kwargs=kwargs)
+        _REGISTRY[name] = dataclasses.replace(_REGISTRY[name], index=order)
         return fn
 
     return decorate
@@ -146,14 +136,15 @@ def example(name: str, title: str, *, chapter: int, expected_balanced: bool = Tr
 def examples() -> dict[str, Example]:
     """Every registered example, in course order (see the module docstring).
 
-    Importing the method families registers their examples; this imports them all.
+    Importing the method families registers their examples: ``balancelab.methods`` imports
+    every family of :data:`FAMILIES`.
 
     Returns
     -------
     dict
         Short name -> :class:`Example`.
     """
-    for fam in FAMILIES:
-        importlib.import_module(f"balancelab.methods.{fam}")
+    from .. import methods   # noqa: F401  (imports every family, so every example is registered)
+
     order = sorted(_REGISTRY.values(), key=lambda e: (e.chapter, FAMILIES.index(e.family), e.index))
     return {e.name: e for e in order}

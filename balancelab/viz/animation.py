@@ -25,6 +25,7 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from ..core.design import Design
+from ..core.validation import positive_int
 from .drawing import Drawing, extent
 from .energy import EnergyView, energy_limits, q_symbol, report_summary
 from . import style
@@ -200,8 +201,7 @@ def configuration_path(design: Design, frames: int = 60) -> np.ndarray:
     (8, 1)
     """
     check_design(design)
-    if isinstance(frames, bool) or not isinstance(frames, (int, np.integer)) or frames < 2:
-        raise ValueError(f"frames must be an integer >= 2, got {frames!r}")
+    frames = positive_int("frames", frames, 2)
     lo, hi = design.q_range[:, 0], design.q_range[:, 1]
     t = np.arange(frames) / frames
     if design.dof == 1:

@@ -20,6 +20,7 @@ from typing import Callable
 import numpy as np
 
 from ..core.design import Design
+from ..core.validation import positive_int
 from ..core.report import q_units
 
 __all__ = ["PALETTE", "STYLE", "Blitter", "angle_label", "as_config", "check_design", "count", "default_q",
@@ -127,11 +128,9 @@ def count(name: str, n, minimum: int = 2) -> int:
     >>> count("n", 2.5)
     Traceback (most recent call last):
     ...
-    ValueError: n must be an integer >= 2, got 2.5
+    TypeError: n must be an integer >= 2, got 2.5
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {n!r}")
-    return int(n)
+    return positive_int(name, n, minimum)
 
 
 def as_config(design: Design, q) -> np.ndarray:

@@ -7,10 +7,10 @@ families), ``technique1`` (two auxiliary links), ``gravity`` (gravity as the lim
 spring load, the 2R arm and the slider-crank), ``watt`` (the 1:1:2 prototype),
 ``roberts`` (the Roberts-Chebyshev cognates), ``cognate_balance`` (the three cognates
 balanced at once through the focal pivot) and ``examples`` (the example four-bar and
-the worked examples of the registry). The four-bar itself, :class:`FourBar`, is
-:mod:`balancelab.mechanisms.fourbar`'s.
+the worked examples of the registry). The four-bar itself is
+:class:`balancelab.FourBar` (:mod:`balancelab.mechanisms.fourbar`).
 """
-from ...mechanisms.fourbar import FourBar, coupler_curve, fourbar_positions, loop_closure_error
+from ...mechanisms.fourbar import coupler_curve, fourbar_positions, loop_closure_error
 from .blocks import (balanced_parallelogram, balanced_plagiograph, basic_balancer, compose_zfl_springs,
                      composed_springs_lever, composing_anchor, plagiograph_map)
 from .techniques import (Technique2Parameters, Technique3Parameters, herder, spring_loaded_fourbar,
@@ -27,7 +27,7 @@ from .examples import example_fourbar
 
 __all__ = ["cognates", "cognate_triangle", "cognate_crank_angles", "cognate_design",
            "cognate_designs", "focal_pivot_circles", "CognateFamily", "cognate_family",
-           "kb_ratio_from_triangle", "balance_cognates", "similar_triangle_family", "FourBar",
+           "kb_ratio_from_triangle", "balance_cognates", "similar_triangle_family",
            "coupler_curve", "fourbar_positions", "loop_closure_error", "spring_loaded_fourbar",
            "basic_balancer", "balanced_parallelogram", "compose_zfl_springs", "composing_anchor",
            "composed_springs_lever", "plagiograph_map", "balanced_plagiograph",

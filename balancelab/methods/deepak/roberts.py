@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike
 
 from ...core.design import Design
 from ...core.elements import Spring
-from ...core.validation import finite_real, planar_point, real_array
+from ...core.validation import finite_real, planar_point, positive_int, real_array
 from ...mechanisms.base import ExplicitKinematics
 from ...mechanisms.fourbar import FourBar, fourbar_design
 from ...mechanisms.geometry import Point, as_complex, as_point, numeric_only
@@ -160,9 +160,7 @@ def cognate_crank_angles(fourbar: FourBar, q: ArrayLike) -> np.ndarray:
 
 
 def _index(index) -> int:
-    if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or index not in (1, 2, 3):
-        raise ValueError(f"index must be 1, 2 or 3, got {index!r}")
-    return int(index)
+    return positive_int("index", index, 1, 3)
 
 
 def cognate_design(fourbar: FourBar, index: int, K: Point | None = None, k_l: float = 1.0) -> Design:

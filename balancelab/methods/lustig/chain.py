@@ -37,7 +37,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import G, Joint, Spring, SymbolicParts, gravity_load
 from ...core.kinematics import Kinematics
-from ...core.validation import body_index, finite_reals, planar_points
+from ...core.validation import body_index, finite_reals, planar_points, positive_int
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.geometry import rotate
 
@@ -321,8 +321,7 @@ def check_topology(n: int, topology) -> tuple[int, tuple]:
     >>> check_topology(2, [(2, 0), [1, 2]])
     (2, ((0, 2), (1, 2)))
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 8:
-        raise ValueError(f"n (number of moving links) must be an integer in 1..8, got {n!r}")
+    n = positive_int("n (number of moving links)", n, 1, 8)
     if isinstance(topology, (str, bytes, dict)) or topology is None:
         raise TypeError(f"topology must be a sequence of (body, body) pairs, got {topology!r}")
     try:

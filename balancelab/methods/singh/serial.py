@@ -15,7 +15,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
-from ...core.validation import finite_real, finite_reals, planar_points
+from ...core.validation import finite_real, finite_reals, planar_points, positive_int
 from ...mechanisms.base import TreeKinematics
 from ...mechanisms.chain import TWO_TURNS, serial_2r_joints, serial_2r_kinematics
 from .counting import conditions_rank
@@ -404,9 +404,7 @@ def free_choice_count(N: int) -> dict:
     >>> c["rank"], c["free"], c["paper_free"]
     (10, 5, 6)
     """
-    if isinstance(N, bool) or not isinstance(N, (int, np.integer)) or N < 1:
-        raise ValueError(f"N must be a whole number of bodies >= 1, got {N!r}")
-    N = int(N)
+    N = positive_int("N", N)
     r = conditions_rank(N)
     springs = 2 * N - 1
     conditions = r["balance_rank"] + r["zero_length_rank"]
