@@ -34,8 +34,8 @@ only when something that needs them is first used.
 """
 import importlib as _importlib
 
-from .core import (BALANCE_TOLERANCE, Attachment, BalanceReport, Design, Energy, G, Joint, Kinematics, Load,
-                   Pulley, Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
+from .core import (BALANCE_TOLERANCE, Attachment, BalanceReport, BalancelabError, Design, Energy, G, Joint,
+                   Kinematics, Load, Pulley, Spring, SymbolicParts, UnreachableConfiguration, gravity_load)
 from .mechanisms import (ExplicitKinematics, FourBar, FourBarKinematics, PeaucellierKinematics, TreeKinematics,
                          fourbar_joints, lever_kinematics, scissors_kinematics, serial_2r_kinematics)
 from .mechanisms.linkage import Linkage
@@ -55,7 +55,7 @@ _LAZY = {
 
 __all__ = [
     # core
-    "BALANCE_TOLERANCE", "Attachment", "BalanceReport", "Design", "Energy", "G", "Joint", "Kinematics",
+    "BALANCE_TOLERANCE", "Attachment", "BalanceReport", "BalancelabError", "Design", "Energy", "G", "Joint", "Kinematics",
     "Load", "Pulley", "Spring", "SymbolicParts", "UnreachableConfiguration", "gravity_load",
     # mechanisms
     "ExplicitKinematics", "FourBar", "FourBarKinematics", "PeaucellierKinematics", "TreeKinematics",

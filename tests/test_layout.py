@@ -100,6 +100,64 @@ def test_modules_and_functions_are_short_enough_to_read(path):
             assert n <= MAX_FUNCTION_LINES, f"{_name(path)}.{node.name} runs {n} lines"
 
 
+#: inside ``methods``: which family may import which other family (``registry`` is open to all).
+#: Everything not listed is refused; the graph has no cycle but the one named in KNOWN_CYCLES.
+FAMILY_EDGES = {
+    "lecture": set(), "singh": set(), "lustig": set(), "deepak": set(), "general": set(),
+    "realize": {"practice"},              # the non-circular pulley is shaped for a real extension spring
+    "practice": {"lecture", "realize"},   # spring selection for the lecture's lever over a pulley
+}
+
+
+def _family(module: str) -> str | None:
+    parts = module.split(".")
+    return parts[2] if len(parts) > 2 and parts[1] == "methods" and parts[2] != "registry" else None
+
+
+def test_method_families_import_only_the_families_they_declare():
+    seen = set()
+    for path in MODULES:
+        mine = _family(_name(path))
+        if mine is None:
+            continue
+        assert mine in FAMILY_EDGES, f"{_name(path)}: family {mine!r} is missing from FAMILY_EDGES"
+        for target, _ in _imports(path):
+            other = _family(target)
+            if other is not None and other != mine:
+                assert other in FAMILY_EDGES[mine], f"{_name(path)} imports {target}: {mine} -> {other} is not allowed"
+                seen.add((mine, other))
+    declared = {(a, b) for a, bs in FAMILY_EDGES.items() for b in bs}
+    assert seen == declared, f"declared edges no module uses: {declared - seen}"
+
+
+def test_no_module_import_cycle():
+    """Module-level imports (and imports hidden inside functions) form no cycle."""
+    graph = {}
+    for path in MODULES:
+        name = _name(path)
+        targets = set()
+        for target, names in _imports(path):
+            targets.add(target)
+            targets.update(f"{target}.{n}" for n in names)    # "from .pkg import module"
+        graph[name] = {t for t in targets if t in {_name(p) for p in MODULES} and t != name
+                       and not name.startswith(t + ".") and not t.startswith(name + ".")}
+    state = {}
+
+    def visit(node, stack):
+        state[node] = "open"
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == "open":
+                cycle = stack[stack.index(nxt):] + [nxt]
+                raise AssertionError("import cycle: " + " -> ".join(cycle))
+            if nxt not in state:
+                visit(nxt, stack + [nxt])
+        state[node] = "done"
+
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [node])
+
+
 def test_subpackage_docstrings_say_what_lives_there_and_what_it_may_import():
     for layer in LAYERS:
         doc = importlib.import_module(f"balancelab.{layer}").__doc__

@@ -48,12 +48,13 @@ def test_an_example_outside_a_method_family_is_refused():
 
 def test_course_order_within_a_module_is_its_source_order_without_frame_inspection():
     """Stacked and consecutive ``@example`` decorators keep their top-to-bottom order; the registry
-    reads no call frames and imports the families explicitly (``balancelab.methods``)."""
+    reads no call frames and imports every family explicitly."""
     import inspect
     import re
 
     source = inspect.getsource(registry)
     assert "_getframe" not in source and "importlib" not in source
+    assert f"from . import {', '.join(sorted(registry.FAMILIES))}" in source   # every family, by name
     names = list(registry.examples())
     by_module: dict[str, list[str]] = {}
     for name, ex in registry.examples().items():

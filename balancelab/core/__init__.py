@@ -1,17 +1,20 @@
 """Core: the parts of a design and the design itself.
 
 What lives here: the input checks (``validation``), loads, springs and joints
-(``elements``), the `Kinematics` contract every mechanism implements (``kinematics``),
+(``elements``), the package's exception types (``errors``), the `Kinematics` contract every mechanism implements (``kinematics``),
 the immutable :class:`Design` with its numeric energy and balance report (``design``)
 and its symbolic energy and balance conditions (``symbolic``).
 
 What it may import: numpy (and sympy lazily), nothing else of balancelab. Everything
 else imports core.
 """
-from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy, UnreachableConfiguration
+from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy
+from .errors import (ApproximationError, BalancelabError, InfeasibleDesign, SingularChoice,
+                     UnreachableConfiguration)
 from .elements import G, Attachment, CablePath, Joint, Load, Pulley, Spring, SymbolicParts, gravity_load
 from .kinematics import Kinematics, body_to_world, joint_gaps
 
-__all__ = ["BALANCE_TOLERANCE", "BalanceReport", "Design", "Energy", "UnreachableConfiguration", "G",
+__all__ = ["BALANCE_TOLERANCE", "BalanceReport", "Design", "Energy", "BalancelabError", "UnreachableConfiguration",
+           "InfeasibleDesign", "SingularChoice", "ApproximationError", "G",
            "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load", "Kinematics",
            "body_to_world", "joint_gaps"]

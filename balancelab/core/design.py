@@ -18,6 +18,7 @@ import numpy as np
 
 from . import report as _report, symbolic as _symbolic
 from .elements import Joint, Load, Spring, SymbolicParts
+from .errors import UnreachableConfiguration
 from .kinematics import Kinematics, body_to_world, joint_gaps, spread
 from .report import BALANCE_TOLERANCE, BalanceReport, Energy
 from .validation import positive_int, real_array, sequence_of, step_size
@@ -25,10 +26,6 @@ from .validation import positive_int, real_array, sequence_of, step_size
 __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BALANCE_TOLERANCE"]
 
 _CHUNK = 16384  # configurations evaluated at once by potential_energy
-
-
-class UnreachableConfiguration(ValueError):
-    """Raised when a configuration is outside what the linkage can reach."""
 
 
 _FIELDS = ("name", "bodies", "joints", "kinematics", "loads", "springs", "symbolic", "labels",

@@ -30,7 +30,7 @@ objective never increases. Every returned design is checked by its own balance r
 What lives here: ``problem`` (candidates as columns of the sampled energy), ``solver``
 (rank, linear program, polish, infeasibility message), ``balancer`` (:func:`balance`),
 ``examples`` (worked examples in the registry, family ``"general"``). Layer: methods; it
-may import ``core``, ``mechanisms`` and the ``lustig`` family's ``InfeasibleDesign``.
+may import ``core`` and ``mechanisms`` (its error types are in ``core.errors``).
 """
 from .balancer import OBJECTIVES, InfeasibleDesign, balance, free_choices
 from . import examples

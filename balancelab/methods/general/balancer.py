@@ -13,7 +13,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import Load, Spring, G
 from ...core.validation import planar_point, positive_int
-from ..lustig.solving import InfeasibleDesign
+from ...core.errors import InfeasibleDesign
 from .problem import Block, columns
 from .bilinear import search
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve

@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..lustig.solving import InfeasibleDesign
-from .problem import columns
-from .solver import column_norms, lp_constraints, rank_of, solve
+from ...core.errors import InfeasibleDesign
+from .problem import columns, lp_constraints
+from .solver import column_norms, rank_of, solve
 from .verdicts import infeasible
 
 __all__ = ["search", "start_points", "lifted_ends"]

@@ -27,7 +27,7 @@ import numpy as np
 from ...core.elements import G
 from ...core.kinematics import body_to_world
 
-__all__ = ["Block", "Problem", "columns", "harmonics"]
+__all__ = ["Block", "Problem", "columns", "harmonics", "lp_constraints"]
 
 
 @dataclass
@@ -204,3 +204,23 @@ def harmonics(design, poses, residual, top: int = 4, q=None) -> list[tuple[str, 
     coef = np.linalg.lstsq(F, residual - residual.mean(), rcond=1e-10)[0]
     order = np.argsort(-np.abs(coef))[:top]
     return [(names[i], float(coef[i])) for i in order if abs(coef[i]) > 1e-12 * max(np.abs(coef).max(), 1e-300)]
+
+
+def lp_constraints(p: Problem, S: np.ndarray):
+    """Bounds and box inequalities on the scaled variables ``y = x / S``."""
+    n = p.nvar
+    bounds = [(None, None)] * n
+    rows = []
+    for b in p.blocks:
+        bounds[b.cols[0]] = (0.0, None)
+        if b.free is None:
+            continue
+        k = b.cols[0]
+        for axis, (lo, hi) in enumerate(b.box):
+            m = b.cols[1 + axis]
+            for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
+                row = np.zeros(n)
+                row[m], row[k] = sign * S[m], -sign * lim * S[k]
+                rows.append(row)
+    A_ub = np.array(rows) if rows else None
+    return bounds, A_ub, (np.zeros(len(rows)) if rows else None)

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...core.validation import MIN_POSITIVE
-from .problem import Problem
+from .problem import Problem, lp_constraints
 from .verdicts import infeasible
 
 __all__ = ["OBJECTIVES", "Solution", "solve", "rank_of", "column_norms"]
@@ -69,26 +69,6 @@ def column_norms(p: Problem) -> np.ndarray:
     dead = D <= 1e-12 * top
     p.A[:, dead] = 0.0
     return np.where(dead, top, D)
-
-
-def lp_constraints(p: Problem, S: np.ndarray):
-    """Bounds and box inequalities on the scaled variables ``y = x / S``."""
-    n = p.nvar
-    bounds = [(None, None)] * n
-    rows = []
-    for b in p.blocks:
-        bounds[b.cols[0]] = (0.0, None)
-        if b.free is None:
-            continue
-        k = b.cols[0]
-        for axis, (lo, hi) in enumerate(b.box):
-            m = b.cols[1 + axis]
-            for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
-                row = np.zeros(n)
-                row[m], row[k] = sign * S[m], -sign * lim * S[k]
-                rows.append(row)
-    A_ub = np.array(rows) if rows else None
-    return bounds, A_ub, (np.zeros(len(rows)) if rows else None)
 
 
 def _cost(p: Problem, objective: str) -> np.ndarray:

@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..lustig.solving import InfeasibleDesign
-from .problem import Problem, harmonics
+from ...core.errors import InfeasibleDesign
+from .problem import Problem, harmonics, lp_constraints
 
 __all__ = ["VERDICTS", "infeasible", "nice_box"]
 
@@ -167,8 +167,6 @@ def _wider(p: Problem, D: np.ndarray):
 
 def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
     from scipy.optimize import linprog
-
-    from .solver import lp_constraints
 
     boxes = [b.box for b in p.blocks]
     try:

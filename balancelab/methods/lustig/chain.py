@@ -195,18 +195,6 @@ class SerialChain:
                                   (bb, (values[f"bx{j}"], values[f"by{j}"])), name=f"k{j}"))
         return cls(tuple(lengths), tuple(masses), tuple(coms), tuple(springs))
 
-    def stiffness_matrix(self, g: float = G) -> np.ndarray:
-        """The paper's ``K_t`` (eq. 13b), shape ``(2N, 2N)``; see :func:`stiffness_matrix`.
-
-        Examples
-        --------
-        >>> SerialChain((0.3,), (1.0,), ((0.1, 0.0),)).stiffness_matrix().shape
-        (4, 4)
-        """
-        from .matrix import stiffness_matrix  # matrix.py builds on this module
-
-        return stiffness_matrix(self, g)
-
     def design(self, name: str = "serial chain with ZFL springs", *, symbolic: bool = False,
                reference: str = REFERENCE) -> Design:
         """This chain as a :class:`balancelab.Design`.

@@ -14,24 +14,13 @@ from typing import Mapping, Sequence
 
 from ...core.design import Design
 from ...core.elements import G
+from ...core.errors import InfeasibleDesign, SingularChoice
 from ...core.validation import finite_real
 from .chain import SerialChain, chain_parameter_names, check_topology
 from .conditions import condition_system
 
 __all__ = ["InfeasibleDesign", "SingularChoice", "SolutionFamily", "solve", "solve_family", "solve_symbolic",
            "synthesize"]
-
-
-class InfeasibleDesign(ValueError):
-    """Raised when the balance equations only have physically impossible solutions.
-
-    For instance a negative spring stiffness, or a non-positive mass or length.
-
-    Examples
-    --------
-    >>> issubclass(InfeasibleDesign, ValueError)
-    True
-    """
 
 
 class SolutionFamily:
@@ -91,23 +80,6 @@ class SolutionFamily:
 
     def __repr__(self) -> str:
         return f"SolutionFamily(free={self.free}, expressions={self.expressions})"
-
-
-class SingularChoice(ValueError):
-    """Raised by :func:`solve` when the conditions leave some unknowns free.
-
-    ``families`` holds the solution families (:class:`SolutionFamily`) when they could be
-    computed for the given numbers, else is empty.
-
-    Examples
-    --------
-    >>> issubclass(SingularChoice, ValueError)
-    True
-    """
-
-    def __init__(self, message: str, families: tuple = ()):
-        super().__init__(message)
-        self.families = tuple(families)
 
 
 _POSITIVE_PREFIX = ("k", "m", "L")

@@ -12,15 +12,12 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import G, Load, Spring
+from ...core.errors import ApproximationError
 from ...core.validation import finite_real, finite_reals, planar_points, positive_int
 from ...mechanisms.lever import lever_design
 from ..registry import register
 
 __all__ = ["ApproximationError", "approximate_lever"]
-
-class ApproximationError(RuntimeError):
-    """Raised when the optimizer of an approximate balance does not converge."""
-
 
 def _lever_torque(x, mass, r, l0, th):
     bx, by, ax, ay, k = x
