@@ -13,7 +13,9 @@ One module per concept:
 * :mod:`.negative`: an ordinary spring with a negative-free-length partner;
 * :mod:`.optimizer`: the best ordinary spring placed by an optimizer (approximate balance);
 * :mod:`.noncircular`: a cable from a real spring wound on a non-circular pulley whose
-  profile makes the balance exact (:func:`noncircular_pulley`), and :mod:`.profile_export`,
+  profile makes the balance exact (:func:`noncircular_pulley`), :mod:`.noncircular_synthesis`
+  (the profile from the energy it balances, and whether a cable can wrap it), :mod:`.profile`
+  (the profile's geometry and the cable on it) and :mod:`.profile_export`,
   the profile as SVG, DXF and CSV files at true scale.
 
 Every name is importable from ``balancelab.methods.realize`` (``bl.realize``).
