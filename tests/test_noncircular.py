@@ -315,8 +315,15 @@ def test_drawing_follows_the_design_cable(design):
         assert np.min(np.hypot(*(path - cab.tangent).T)) < 1e-12           # passes the tangent point
         eyelet = np.add(s.cable.pivot, s.cable.anchor)
         assert np.min(np.hypot(*(path - eyelet).T)) < 1e-12                # and the eyelet
-        # the coil is drawn at the spring's true length beyond the eyelet
-        assert np.hypot(*(path[0] - eyelet)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        # the coil starts at the spring's fixed anchor (the design's build data), runs towards the eyelet
+        # at the spring's true length to its hook end, and the cable goes on from the hook to the eyelet
+        anchor = np.array(design.parameters["spring_anchor"])
+        assert np.allclose(path[0], anchor, rtol=0, atol=1e-12)
+        at_eyelet = int(np.argmin(np.hypot(*(path - eyelet).T)))
+        hook = path[at_eyelet - 1]
+        assert np.hypot(*(hook - anchor)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        assert abs(_cross(hook - anchor, eyelet - anchor)) < 1e-12    # on the line from the anchor to the eyelet
+        assert np.hypot(*(hook - anchor)) < np.hypot(*(eyelet - anchor))
         ox, oy = profile_outline(s, q)
         assert np.allclose(np.column_stack([ox, oy])[0], s.cable.world(q, s.cable.local_points(-1.0)))
     fig = bl.draw(design, 0.3).figure
@@ -533,3 +540,42 @@ def test_the_flange_covers_the_whole_groove_and_the_core_plate(design):
                 for a, b in zip(edges[:-1], edges[1:])], axis=0)
     assert np.all(outline.contains_points(part.pitch)) and d.min() >= 1e-3 - 1e-12
     assert np.all(outline.contains_points(part.groove, radius=1e-9) | outline.contains_points(part.groove, radius=-1e-9))
+
+
+def test_each_cable_spring_of_the_lamp_keeps_its_own_build_data_and_its_coil_is_drawn_from_its_anchor():
+    """Two different real springs on the lamp arm: ``pulleys[i]`` holds each one's own numbers, which
+    reassemble that spring's model length, and the drawn coil of each starts at its own anchor."""
+    from balancelab.viz.springs import cable_coil_ends, cable_path
+
+    lamp = bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+    springs = (ExtensionSpring(2.5e-3, 20e-3, 60, initial_tension=20.0),
+               ExtensionSpring(2.2e-3, 18e-3, 50, initial_tension=12.0))
+    one = rz.noncircular_pulley(lamp, 0, spring_model=springs[0], angle_range=RANGE)
+    both = rz.noncircular_pulley(one, 1, spring_model=springs[1], angle_range=RANGE)
+    pulleys = both.parameters["pulleys"]
+    assert sorted(pulleys) == [0, 1]
+    with pytest.raises(TypeError):
+        pulleys[0]["k"] = 1.0                  # a design is a value: its build data are read-only
+    q = both.sample(50, seed=2)
+    for i, real in enumerate(springs):
+        p, s = pulleys[i], both.springs[i]
+        assert p["k"] == pytest.approx(real.k) and p["free_length"] == pytest.approx(real.equivalent_free_length)
+        assert p["initial_tension"] == real.initial_tension
+        assert s.k == p["k"] and s.free_length == p["free_length"]
+        assert p["eyelet"] == pytest.approx(list(s.a.point)) and p["clamp"] == pytest.approx(list(s.b.point))
+        cab = s.cable.cable(q[:, i])
+        length = p["anchor_distance"] + cab.path - p["cable_length"]        # from this spring's own build data
+        poses = both.poses(q)
+        assert np.allclose(length, s.cable.length(poses[:, 0], poses[:, s.b.body]), rtol=0, atol=1e-12)
+        tension = s.k * (length - s.free_length)
+        assert p["min_tension"] * (1 - 1e-6) <= tension.min() and tension.max() <= p["max_tension"] * (1 + 1e-6)
+        fixed, hook = cable_coil_ends(s, q[:, i])
+        assert np.allclose(fixed, p["spring_anchor"], rtol=0, atol=1e-12)
+        assert np.allclose(np.hypot(*(hook - fixed).T), length, rtol=1e-12)
+        x, y = cable_path(s, float(q[0, i]), 1.0)
+        assert np.allclose([x[0], y[0]], p["spring_anchor"], rtol=0, atol=1e-12)
+    # the springs differ, and so do their numbers; the flat keys are the spring replaced last
+    assert pulleys[0]["k"] != pulleys[1]["k"] and pulleys[0]["spring_anchor"] != pulleys[1]["spring_anchor"]
+    assert all(both.parameters[key] == pulleys[1][key] for key in pulleys[1])
+    assert one.parameters["pulleys"][0]["k"] == pulleys[0]["k"] and 1 not in one.parameters["pulleys"]
