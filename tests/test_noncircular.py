@@ -579,3 +579,77 @@ def test_each_cable_spring_of_the_lamp_keeps_its_own_build_data_and_its_coil_is_
     assert pulleys[0]["k"] != pulleys[1]["k"] and pulleys[0]["spring_anchor"] != pulleys[1]["spring_anchor"]
     assert all(both.parameters[key] == pulleys[1][key] for key in pulleys[1])
     assert one.parameters["pulleys"][0]["k"] == pulleys[0]["k"] and 1 not in one.parameters["pulleys"]
+
+
+# ------------------------------------------------------------------ practice: forces and tolerances
+def _energy_slope(d, theta, step=1e-4):
+    """dV/dtheta (N m per rad) of a one-coordinate design by the five-point difference of its energy."""
+    e = [d.potential_energy(theta + j * step).total for j in (-2, -1, 1, 2)]
+    return (e[0] - 8 * e[1] + 8 * e[2] - e[3]) / (12 * step)
+
+
+def _rebuilt(design, *, anchor_shift=(0.0, 0.0), cable_shift=0.0, free_length=None):
+    """The design with its cable spring built off the drawing: eyelet moved, cable longer, free length off."""
+    import dataclasses
+
+    s = design.springs[0]
+    p = s.cable
+    anchor = tuple(np.add(p.anchor, anchor_shift))
+    prof = rz.NoncircularProfile(p.h, p.psi, p.angle_range, anchor, p.pivot, p.turn, p.cable_length + cable_shift,
+                                 anchor_distance=p.anchor_distance)
+    built = dataclasses.replace(s, a=bl.Attachment(0, anchor), realization=prof,
+                                free_length=s.free_length if free_length is None else free_length)
+    return design.replace(springs=[built])
+
+
+def test_forces_include_the_cable_and_agree_with_the_energys_derivative(design):
+    import dataclasses
+
+    from balancelab.methods.practice import forces
+
+    theta = np.linspace(RANGE[0] + 0.05, RANGE[1] - 0.05, 15)
+    s, p = design.springs[0], design.parameters
+    # the tension from the build data: spring length = anchor distance + path - cable length
+    cab = s.cable.cable(theta)
+    expected = s.k * (p["anchor_distance"] + cab.path - p["cable_length"] - s.free_length)
+    assert np.allclose(forces.spring_forces(design, theta[:, None])[:, 0], expected, rtol=1e-12)
+    # balanced: the joint holds no torque; heavier by 10 %: both routes give the energy's slope
+    assert np.max(np.abs(forces.joint_loads(design, theta[:, None]).torque)) < 1e-9 * MASS * G * LENGTH
+    heavy = design.replace(loads=[dataclasses.replace(ld, force=tuple(1.1 * f for f in ld.force))
+                                  for ld in design.loads])
+    slope = _energy_slope(heavy, theta)
+    assert np.max(np.abs(slope)) > 0.05 * MASS * G * LENGTH
+    _, Q = forces.generalized_force(heavy, theta[:, None])
+    assert np.allclose(Q[:, 0], slope, rtol=0, atol=1e-7 * MASS * G * LENGTH)
+    jl = forces.joint_loads(heavy, theta[:, None])
+    assert np.allclose(jl.torque[:, 0], slope, rtol=0, atol=1e-7 * MASS * G * LENGTH)
+    # the joint carries the weight and the cable's pull: the link's forces and moments sum to zero
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    weight = np.array(heavy.loads[0].force)
+    assert np.allclose(jl.force[:, 0], -(weight + expected[:, None] * pull), rtol=0, atol=1e-9)
+
+
+def test_tolerance_of_a_cable_spring_follows_its_built_errors(design):
+    from balancelab.methods.practice import forces, tolerance
+
+    # a rate error e: the tension is (1 + e) times the one that balances, the residual e m g r cos(theta)
+    r = tolerance.monte_carlo(design, tolerance.Tolerances(k=0.05), n=300, grid=25)
+    e = r.samples["k"][:, 0] / design.springs[0].k - 1
+    assert np.allclose(r.worst, np.abs(e) * MASS * G * LENGTH, rtol=1e-6)
+    # a misplaced eyelet, a cable too long at the clamp, a wrong free length: the batch's residual is the
+    # derivative of the energy of the design rebuilt with that error
+    theta = np.linspace(RANGE[0] + 0.1, RANGE[1] - 0.1, 9)
+    s = design.springs[0]
+    tangent = s.cable.local_points(s.cable.end_parameter) - s.cable.local_points(s.cable.end_parameter * (1 - 1e-6))
+    tangent /= np.hypot(*tangent)
+    shift = np.array([0.002, -0.0015])
+    cases = [({"a_points": [[np.add(s.a.point, shift)]]}, _rebuilt(design, anchor_shift=shift)),
+             ({"b_points": [[np.add(s.b.point, 0.001 * tangent)]]}, _rebuilt(design, cable_shift=-0.001)),
+             ({"free_length": [[s.free_length + 0.001]]}, _rebuilt(design, free_length=s.free_length + 0.001))]
+    for values, built in cases:
+        Q = forces.batch_generalized_force(design, theta[:, None], **values)[0, :, 0]
+        slope = _energy_slope(built, theta)
+        assert np.max(np.abs(slope)) > 1e-3 * MASS * G * LENGTH
+        assert np.allclose(Q, slope, rtol=0, atol=1e-7 * MASS * G * LENGTH), values
+    sens = tolerance.sensitivities(design, tolerance.Tolerances(k=0.02, attachment=1e-3, free_length=1e-3), n=200)
+    assert set(sens) == {"all", "k", "attachment", "free_length"} and all(v > 0 for v in sens.values())
