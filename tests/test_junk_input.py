@@ -145,7 +145,7 @@ MANUAL = {
                                                                     "angle_range": (-1.0, 1.0)}),
     "spring_limits": (realize.spring_limits, (_REAL_SPRING,), {}),
     "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
-    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"n": 50}),
+    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"tolerance": 1e-3}),
 }
 
 #: public names that are not builders taking user input, with the reason

@@ -131,7 +131,7 @@ def _cable_from_points(points, end, anchor, theta):
 
 def test_exported_points_balance_within_the_bound_their_spacing_implies(design, tmp_path):
     n = 2000
-    path = rz.export_profile(design, tmp_path / "pulley.csv", n=n)
+    path = rz.export_profile(design, tmp_path / "pulley.csv", n=n, tolerance=1e-6)
     pts = _read_csv(path)[:, 1:] / 1000.0
     assert len(pts) == n
     spacing = float(np.max(np.hypot(*np.diff(pts, axis=0).T)))
@@ -177,7 +177,7 @@ def _polyline_distance(points, poly):
 def test_dxf_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
     ezdxf = pytest.importorskip("ezdxf")
     part = rz.profile_part(design, n=800)
-    doc = ezdxf.readfile(rz.export_profile(design, tmp_path / "pulley.dxf", n=800))
+    doc = ezdxf.readfile(rz.export_profile(design, tmp_path / "pulley.dxf", n=800, tolerance=1e-5))
     assert doc.header["$INSUNITS"] == 4    # millimetres
     msp = doc.modelspace()
     got = {e.dxf.layer: e for e in msp if e.dxftype() in ("LWPOLYLINE", "CIRCLE")}
@@ -196,7 +196,7 @@ def test_dxf_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
 
 def test_svg_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
     part = rz.profile_part(design, n=600)
-    root = ET.parse(rz.export_profile(design, tmp_path / "pulley.svg", n=600)).getroot()
+    root = ET.parse(rz.export_profile(design, tmp_path / "pulley.svg", n=600, tolerance=1e-5)).getroot()
     assert root.get("width").endswith("mm")
     ns = {"s": "http://www.w3.org/2000/svg"}
     paths = {p.get("id"): p.get("d") for p in root.findall("s:path", ns)}
@@ -653,3 +653,37 @@ def test_tolerance_of_a_cable_spring_follows_its_built_errors(design):
         assert np.allclose(Q, slope, rtol=0, atol=1e-7 * MASS * G * LENGTH), values
     sens = tolerance.sensitivities(design, tolerance.Tolerances(k=0.02, attachment=1e-3, free_length=1e-3), n=200)
     assert set(sens) == {"all", "k", "attachment", "free_length"} and all(v > 0 for v in sens.values())
+
+
+# ------------------------------------------------------------------ the export keeps the balance bound
+def test_the_export_refuses_a_polyline_too_coarse_for_the_bound_and_names_n(design, tmp_path):
+    with pytest.raises(ValueError, match=r"n=600 points .* varies the energy by [\d.e-]+ .* above the bound "
+                                         r"tolerance=1e-09; about \d+ points would"):
+        rz.export_profile(design, tmp_path / "coarse.csv", n=600)
+    assert not (tmp_path / "coarse.csv").exists()
+    for bad in (0.0, 1.0, -1e-6, float("nan"), "tight"):
+        with pytest.raises((TypeError, ValueError), match="tolerance"):
+            rz.export_profile(design, tmp_path / "bad.csv", n=600, tolerance=bad)
+    for bad in (-7, 5, 600.5, "600", float("nan")):     # n=None chooses; any other n must be a count >= 10
+        with pytest.raises((TypeError, ValueError), match=r"\bn\b"):
+            rz.export_profile(design, tmp_path / "bad.csv", n=bad, tolerance=1e-3)
+
+
+def test_the_default_export_raises_n_until_the_cut_part_balances_to_the_bound(design, tmp_path):
+    """Recomputed here from the written points alone (our own cable wrap): the energy of the weight plus
+    the spring's energy varies by at most 1e-9 of what the weight exchanges."""
+    pts = _read_csv(rz.export_profile(design, tmp_path / "pulley.csv"))[:, 1:] / 1000.0
+    assert len(pts) > 2000
+    s, p = design.springs[0], design.parameters
+    cable_length = p["cable_length"] - p["anchor_distance"]
+    theta = np.concatenate([np.linspace(RANGE[0] + 0.02, RANGE[1] - 0.02, 120),
+                            np.random.default_rng(11).uniform(RANGE[0] + 0.02, RANGE[1] - 0.02, 60)])
+    paths = np.array([_cable_from_points(pts, np.array(s.b.point), np.array(s.a.point), th)[0] for th in theta])
+    weight = MASS * G * LENGTH * np.sin(theta)                    # the tip's weight: m g r sin(theta)
+    total = weight + 0.5 * s.k * (paths - cable_length - s.free_length) ** 2
+    assert np.ptp(total) <= 1e-9 * (MASS * G * LENGTH * (math.sin(RANGE[1] - 0.02) - math.sin(RANGE[0] + 0.02)))
+    # and the polyline of 2,000 points, written with a looser bound, does not keep 1e-9
+    coarse = _read_csv(rz.export_profile(design, tmp_path / "coarse.csv", n=2000, tolerance=1e-6))[:, 1:] / 1000.0
+    paths = np.array([_cable_from_points(coarse, np.array(s.b.point), np.array(s.a.point), th)[0] for th in theta])
+    total = weight + 0.5 * s.k * (paths - cable_length - s.free_length) ** 2
+    assert 1e-9 < np.ptp(total) / np.ptp(weight) <= 1e-6
