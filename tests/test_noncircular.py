@@ -687,3 +687,18 @@ def test_the_default_export_raises_n_until_the_cut_part_balances_to_the_bound(de
     paths = np.array([_cable_from_points(coarse, np.array(s.b.point), np.array(s.a.point), th)[0] for th in theta])
     total = weight + 0.5 * s.k * (paths - cable_length - s.free_length) ** 2
     assert 1e-9 < np.ptp(total) / np.ptp(weight) <= 1e-6
+
+
+def test_a_misplaced_eyelet_gives_the_cable_path_of_the_cut_part_even_past_the_profiles_ends(design):
+    """path_from agrees with the cable wound on a fine polyline of the profile (profile_check's own
+    computation), also at the range's ends where the shifted eyelet pulls the cable over the part's end."""
+    from balancelab.methods.realize.profile_check import polyline_path
+
+    prof, s = design.springs[0].cable, design.springs[0]
+    pts = prof.local_points(np.linspace(-1.0, 1.0, 40001))
+    theta = np.array([RANGE[0], RANGE[0] + 0.01, 0.0, RANGE[1] - 0.01, RANGE[1]])
+    for shift in ((0.0, 0.0), (0.01, 0.0), (-0.01, 0.0), (0.0, 0.01), (0.0, -0.01)):
+        anchor = np.add(prof.anchor, shift)
+        got = prof.path_from(theta, anchor)
+        want = polyline_path(pts, theta, anchor, s.b.point, prof.turn)
+        assert np.allclose(got, want, rtol=0, atol=1e-7), shift

@@ -237,7 +237,7 @@ def _cable_generalized_force(design: Design, q, i: int, p: dict) -> np.ndarray:
         theta = P[:, s.b.body, 2]
         if nominal:
             return np.broadcast_to(cab.cable(theta).path - cab.cable_length, (len(anchor), len(theta)))
-        return cab.path_from(theta[None, :], anchor[:, None, :], overrun=0.05) - cab.cable_length + extra[:, None]
+        return cab.path_from(theta[None, :], anchor[:, None, :]) - cab.cable_length + extra[:, None]
 
     L, dL = _basis_and_derivative(design, q, length)
     tension = p["k"][:, i, None] * (L - p["free_length"][:, i, None])

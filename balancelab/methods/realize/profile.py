@@ -218,19 +218,19 @@ class NoncircularProfile(CablePath):
                 break
         return x
 
-    def path_from(self, theta, anchor, overrun: float = 0.0) -> np.ndarray:
+    def path_from(self, theta, anchor) -> np.ndarray:
         """The cable's path (m) at link angles ``theta`` (rad) from eyelets ``anchor`` other than the design's.
 
         The built part with its eyelet misplaced: ``anchor`` (world frame relative to the pivot, m,
         shape ``(..., 2)``) broadcasts with ``theta``; the profile, the clamp and the cable are the
-        design's. A misplaced eyelet moves the tangent point; ``overrun`` (in the profile's
-        parameter, 1 = half the range) is how far past the profile's ends it may then go, on the
-        profile's smooth continuation (the flanges run on past the ends).
+        design's. A misplaced eyelet moves the tangent point; where it would move past one of the
+        profile's ends the cable bends over that end instead (straight from the eyelet to the end
+        point, then wrapped from there, or straight to the clamp).
 
         Raises
         ------
         ProfileError
-            Where the tangent point leaves the profile by more than ``overrun``.
+            Where the tangency cannot be solved (the eyelet far off).
 
         Examples
         --------
@@ -244,10 +244,17 @@ class NoncircularProfile(CablePath):
         ax, ay = anchor[..., 0], self.turn * anchor[..., 1]
         rho, alpha = np.hypot(ax, ay), np.arctan2(ay, ax)
         x = self._tangent(theta, rho, alpha)
-        if not np.all(np.abs(x) <= 1 + _EDGE + overrun):
-            self._refuse(np.broadcast_to(theta, x.shape)[~(np.abs(x) <= 1 + _EDGE + overrun)])
+        if not np.all(np.isfinite(x)):
+            self._refuse(np.broadcast_to(theta, x.shape)[~np.isfinite(x)])
+        inside = np.abs(x) <= 1.0
+        x = np.clip(x, -1.0, 1.0)
         h, psi = self.support(x)
         straight = rho * np.sin(psi + self._canonical(theta) - alpha) + self._h_psi(x)
+        if not np.all(inside):     # over an end of the profile: straight from the eyelet to that end
+            ends = self.world(np.broadcast_to(theta, x.shape), self.local_points(x))
+            gap_x = ends[..., 0] - (self.pivot[0] + anchor[..., 0])
+            gap_y = ends[..., 1] - (self.pivot[1] + anchor[..., 1])
+            straight = np.where(inside, straight, np.hypot(gap_x, gap_y))
         return straight + self.arc_length(self.end_parameter) - self.arc_length(x)
 
     def _refuse(self, where) -> None:
