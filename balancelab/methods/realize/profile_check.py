@@ -114,7 +114,9 @@ def polyline_variation(design: Design, spring: int, points) -> float:
         The relative variation (0 for a perfect balance).
     """
     s = design.springs[spring]
-    prof: NoncircularProfile = s.cable
+    prof = s.cable
+    if not isinstance(prof, NoncircularProfile):
+        raise ValueError(f"{design.name}: spring {spring} is not wound on a non-circular pulley")
     theta = np.linspace(*prof.angle_range, ANGLES)
     coordinate = _coordinate(design, s.b.body)
     q = np.repeat(design.q_range.mean(1)[None, :], ANGLES, axis=0)
