@@ -145,7 +145,8 @@ MANUAL = {
                                                                     "angle_range": (-1.0, 1.0)}),
     "spring_limits": (realize.spring_limits, (_REAL_SPRING,), {}),
     "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
-    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"n": 50}),
+    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"tolerance": 1e-3}),
+    "sleeve_lever": (realize.sleeve_lever, (), {"mass": 2.0, "length": 0.5, "b": 0.3, "c": 0.2, "free_length": 0.05}),
 }
 
 #: public names that are not builders taking user input, with the reason
@@ -164,6 +165,7 @@ EXEMPT = {
     "example_fourbar": "takes no argument", "lustig_case1": "takes no argument", "lustig_case2": "takes no argument",
     "lustig_case3": "takes no argument", "lustig_case4": "takes no argument",
     "NoncircularProfile": "built by noncircular_pulley from its synthesis (Chebyshev series); not a user-facing builder",
+    "sleeve_derivation": "takes no argument",
     "CableGeometry": "a result (NamedTuple)", "ProfilePart": "a result (NamedTuple)", "ProfileError": "an exception",
 }
 

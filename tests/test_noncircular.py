@@ -131,7 +131,7 @@ def _cable_from_points(points, end, anchor, theta):
 
 def test_exported_points_balance_within_the_bound_their_spacing_implies(design, tmp_path):
     n = 2000
-    path = rz.export_profile(design, tmp_path / "pulley.csv", n=n)
+    path = rz.export_profile(design, tmp_path / "pulley.csv", n=n, tolerance=1e-6)
     pts = _read_csv(path)[:, 1:] / 1000.0
     assert len(pts) == n
     spacing = float(np.max(np.hypot(*np.diff(pts, axis=0).T)))
@@ -177,7 +177,7 @@ def _polyline_distance(points, poly):
 def test_dxf_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
     ezdxf = pytest.importorskip("ezdxf")
     part = rz.profile_part(design, n=800)
-    doc = ezdxf.readfile(rz.export_profile(design, tmp_path / "pulley.dxf", n=800))
+    doc = ezdxf.readfile(rz.export_profile(design, tmp_path / "pulley.dxf", n=800, tolerance=1e-5))
     assert doc.header["$INSUNITS"] == 4    # millimetres
     msp = doc.modelspace()
     got = {e.dxf.layer: e for e in msp if e.dxftype() in ("LWPOLYLINE", "CIRCLE")}
@@ -196,7 +196,7 @@ def test_dxf_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
 
 def test_svg_reads_back_within_a_hundredth_of_a_millimetre(design, tmp_path):
     part = rz.profile_part(design, n=600)
-    root = ET.parse(rz.export_profile(design, tmp_path / "pulley.svg", n=600)).getroot()
+    root = ET.parse(rz.export_profile(design, tmp_path / "pulley.svg", n=600, tolerance=1e-5)).getroot()
     assert root.get("width").endswith("mm")
     ns = {"s": "http://www.w3.org/2000/svg"}
     paths = {p.get("id"): p.get("d") for p in root.findall("s:path", ns)}
@@ -315,8 +315,15 @@ def test_drawing_follows_the_design_cable(design):
         assert np.min(np.hypot(*(path - cab.tangent).T)) < 1e-12           # passes the tangent point
         eyelet = np.add(s.cable.pivot, s.cable.anchor)
         assert np.min(np.hypot(*(path - eyelet).T)) < 1e-12                # and the eyelet
-        # the coil is drawn at the spring's true length beyond the eyelet
-        assert np.hypot(*(path[0] - eyelet)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        # the coil starts at the spring's fixed anchor (the design's build data), runs towards the eyelet
+        # at the spring's true length to its hook end, and the cable goes on from the hook to the eyelet
+        anchor = np.array(design.parameters["spring_anchor"])
+        assert np.allclose(path[0], anchor, rtol=0, atol=1e-12)
+        at_eyelet = int(np.argmin(np.hypot(*(path - eyelet).T)))
+        hook = path[at_eyelet - 1]
+        assert np.hypot(*(hook - anchor)) == pytest.approx(cab.path - s.cable.cable_length, rel=1e-12)
+        assert abs(_cross(hook - anchor, eyelet - anchor)) < 1e-12    # on the line from the anchor to the eyelet
+        assert np.hypot(*(hook - anchor)) < np.hypot(*(eyelet - anchor))
         ox, oy = profile_outline(s, q)
         assert np.allclose(np.column_stack([ox, oy])[0], s.cable.world(q, s.cable.local_points(-1.0)))
     fig = bl.draw(design, 0.3).figure
@@ -533,3 +540,165 @@ def test_the_flange_covers_the_whole_groove_and_the_core_plate(design):
                 for a, b in zip(edges[:-1], edges[1:])], axis=0)
     assert np.all(outline.contains_points(part.pitch)) and d.min() >= 1e-3 - 1e-12
     assert np.all(outline.contains_points(part.groove, radius=1e-9) | outline.contains_points(part.groove, radius=-1e-9))
+
+
+def test_each_cable_spring_of_the_lamp_keeps_its_own_build_data_and_its_coil_is_drawn_from_its_anchor():
+    """Two different real springs on the lamp arm: ``pulleys[i]`` holds each one's own numbers, which
+    reassemble that spring's model length, and the drawn coil of each starts at its own anchor."""
+    from balancelab.viz.springs import cable_coil_ends, cable_path
+
+    lamp = bl.lecture.serial_2r_base_springs(masses=(1.0, 1.0), length=0.5, coms=((0.25, 0.0), (0.25, 0.0)),
+                                             b=(0.3, 0.25), c=(0.15, 0.1))
+    springs = (ExtensionSpring(2.5e-3, 20e-3, 60, initial_tension=20.0),
+               ExtensionSpring(2.2e-3, 18e-3, 50, initial_tension=12.0))
+    one = rz.noncircular_pulley(lamp, 0, spring_model=springs[0], angle_range=RANGE)
+    both = rz.noncircular_pulley(one, 1, spring_model=springs[1], angle_range=RANGE)
+    pulleys = both.parameters["pulleys"]
+    assert sorted(pulleys) == [0, 1]
+    with pytest.raises(TypeError):
+        pulleys[0]["k"] = 1.0                  # a design is a value: its build data are read-only
+    q = both.sample(50, seed=2)
+    for i, real in enumerate(springs):
+        p, s = pulleys[i], both.springs[i]
+        assert p["k"] == pytest.approx(real.k) and p["free_length"] == pytest.approx(real.equivalent_free_length)
+        assert p["initial_tension"] == real.initial_tension
+        assert s.k == p["k"] and s.free_length == p["free_length"]
+        assert p["eyelet"] == pytest.approx(list(s.a.point)) and p["clamp"] == pytest.approx(list(s.b.point))
+        cab = s.cable.cable(q[:, i])
+        length = p["anchor_distance"] + cab.path - p["cable_length"]        # from this spring's own build data
+        poses = both.poses(q)
+        assert np.allclose(length, s.cable.length(poses[:, 0], poses[:, s.b.body]), rtol=0, atol=1e-12)
+        tension = s.k * (length - s.free_length)
+        assert p["min_tension"] * (1 - 1e-6) <= tension.min() and tension.max() <= p["max_tension"] * (1 + 1e-6)
+        fixed, hook = cable_coil_ends(s, q[:, i])
+        assert np.allclose(fixed, p["spring_anchor"], rtol=0, atol=1e-12)
+        assert np.allclose(np.hypot(*(hook - fixed).T), length, rtol=1e-12)
+        x, y = cable_path(s, float(q[0, i]), 1.0)
+        assert np.allclose([x[0], y[0]], p["spring_anchor"], rtol=0, atol=1e-12)
+    # the springs differ, and so do their numbers; the flat keys are the spring replaced last
+    assert pulleys[0]["k"] != pulleys[1]["k"] and pulleys[0]["spring_anchor"] != pulleys[1]["spring_anchor"]
+    assert all(both.parameters[key] == pulleys[1][key] for key in pulleys[1])
+    assert one.parameters["pulleys"][0]["k"] == pulleys[0]["k"] and 1 not in one.parameters["pulleys"]
+
+
+# ------------------------------------------------------------------ practice: forces and tolerances
+def _energy_slope(d, theta, step=1e-4):
+    """dV/dtheta (N m per rad) of a one-coordinate design by the five-point difference of its energy."""
+    e = [d.potential_energy(theta + j * step).total for j in (-2, -1, 1, 2)]
+    return (e[0] - 8 * e[1] + 8 * e[2] - e[3]) / (12 * step)
+
+
+def _rebuilt(design, *, anchor_shift=(0.0, 0.0), cable_shift=0.0, free_length=None):
+    """The design with its cable spring built off the drawing: eyelet moved, cable longer, free length off."""
+    import dataclasses
+
+    s = design.springs[0]
+    p = s.cable
+    anchor = tuple(np.add(p.anchor, anchor_shift))
+    prof = rz.NoncircularProfile(p.h, p.psi, p.angle_range, anchor, p.pivot, p.turn, p.cable_length + cable_shift,
+                                 anchor_distance=p.anchor_distance)
+    built = dataclasses.replace(s, a=bl.Attachment(0, anchor), realization=prof,
+                                free_length=s.free_length if free_length is None else free_length)
+    return design.replace(springs=[built])
+
+
+def test_forces_include_the_cable_and_agree_with_the_energys_derivative(design):
+    import dataclasses
+
+    from balancelab.methods.practice import forces
+
+    theta = np.linspace(RANGE[0] + 0.05, RANGE[1] - 0.05, 15)
+    s, p = design.springs[0], design.parameters
+    # the tension from the build data: spring length = anchor distance + path - cable length
+    cab = s.cable.cable(theta)
+    expected = s.k * (p["anchor_distance"] + cab.path - p["cable_length"] - s.free_length)
+    assert np.allclose(forces.spring_forces(design, theta[:, None])[:, 0], expected, rtol=1e-12)
+    # balanced: the joint holds no torque; heavier by 10 %: both routes give the energy's slope
+    assert np.max(np.abs(forces.joint_loads(design, theta[:, None]).torque)) < 1e-9 * MASS * G * LENGTH
+    heavy = design.replace(loads=[dataclasses.replace(ld, force=tuple(1.1 * f for f in ld.force))
+                                  for ld in design.loads])
+    slope = _energy_slope(heavy, theta)
+    assert np.max(np.abs(slope)) > 0.05 * MASS * G * LENGTH
+    _, Q = forces.generalized_force(heavy, theta[:, None])
+    assert np.allclose(Q[:, 0], slope, rtol=0, atol=1e-7 * MASS * G * LENGTH)
+    jl = forces.joint_loads(heavy, theta[:, None])
+    assert np.allclose(jl.torque[:, 0], slope, rtol=0, atol=1e-7 * MASS * G * LENGTH)
+    # the joint carries the weight and the cable's pull: the link's forces and moments sum to zero
+    pull = (cab.anchor - cab.tangent) / np.hypot(*(cab.anchor - cab.tangent).T)[:, None]
+    weight = np.array(heavy.loads[0].force)
+    assert np.allclose(jl.force[:, 0], -(weight + expected[:, None] * pull), rtol=0, atol=1e-9)
+
+
+def test_tolerance_of_a_cable_spring_follows_its_built_errors(design):
+    from balancelab.methods.practice import forces, tolerance
+
+    # a rate error e: the tension is (1 + e) times the one that balances, the residual e m g r cos(theta)
+    r = tolerance.monte_carlo(design, tolerance.Tolerances(k=0.05), n=300, grid=25)
+    e = r.samples["k"][:, 0] / design.springs[0].k - 1
+    assert np.allclose(r.worst, np.abs(e) * MASS * G * LENGTH, rtol=1e-6)
+    # a misplaced eyelet, a cable too long at the clamp, a wrong free length: the batch's residual is the
+    # derivative of the energy of the design rebuilt with that error
+    theta = np.linspace(RANGE[0] + 0.1, RANGE[1] - 0.1, 9)
+    s = design.springs[0]
+    tangent = s.cable.local_points(s.cable.end_parameter) - s.cable.local_points(s.cable.end_parameter * (1 - 1e-6))
+    tangent /= np.hypot(*tangent)
+    shift = np.array([0.002, -0.0015])
+    cases = [({"a_points": [[np.add(s.a.point, shift)]]}, _rebuilt(design, anchor_shift=shift)),
+             ({"b_points": [[np.add(s.b.point, 0.001 * tangent)]]}, _rebuilt(design, cable_shift=-0.001)),
+             ({"free_length": [[s.free_length + 0.001]]}, _rebuilt(design, free_length=s.free_length + 0.001))]
+    for values, built in cases:
+        Q = forces.batch_generalized_force(design, theta[:, None], **values)[0, :, 0]
+        slope = _energy_slope(built, theta)
+        assert np.max(np.abs(slope)) > 1e-3 * MASS * G * LENGTH
+        assert np.allclose(Q, slope, rtol=0, atol=1e-7 * MASS * G * LENGTH), values
+    sens = tolerance.sensitivities(design, tolerance.Tolerances(k=0.02, attachment=1e-3, free_length=1e-3), n=200)
+    assert set(sens) == {"all", "k", "attachment", "free_length"} and all(v > 0 for v in sens.values())
+
+
+# ------------------------------------------------------------------ the export keeps the balance bound
+def test_the_export_refuses_a_polyline_too_coarse_for_the_bound_and_names_n(design, tmp_path):
+    with pytest.raises(ValueError, match=r"n=600 points .* varies the energy by [\d.e-]+ .* above the bound "
+                                         r"tolerance=1e-09; about \d+ points would"):
+        rz.export_profile(design, tmp_path / "coarse.csv", n=600)
+    assert not (tmp_path / "coarse.csv").exists()
+    for bad in (0.0, 1.0, -1e-6, float("nan"), "tight"):
+        with pytest.raises((TypeError, ValueError), match="tolerance"):
+            rz.export_profile(design, tmp_path / "bad.csv", n=600, tolerance=bad)
+    for bad in (-7, 5, 600.5, "600", float("nan")):     # n=None chooses; any other n must be a count >= 10
+        with pytest.raises((TypeError, ValueError), match=r"\bn\b"):
+            rz.export_profile(design, tmp_path / "bad.csv", n=bad, tolerance=1e-3)
+
+
+def test_the_default_export_raises_n_until_the_cut_part_balances_to_the_bound(design, tmp_path):
+    """Recomputed here from the written points alone (our own cable wrap): the energy of the weight plus
+    the spring's energy varies by at most 1e-9 of what the weight exchanges."""
+    pts = _read_csv(rz.export_profile(design, tmp_path / "pulley.csv"))[:, 1:] / 1000.0
+    assert len(pts) > 2000
+    s, p = design.springs[0], design.parameters
+    cable_length = p["cable_length"] - p["anchor_distance"]
+    theta = np.concatenate([np.linspace(RANGE[0] + 0.02, RANGE[1] - 0.02, 120),
+                            np.random.default_rng(11).uniform(RANGE[0] + 0.02, RANGE[1] - 0.02, 60)])
+    paths = np.array([_cable_from_points(pts, np.array(s.b.point), np.array(s.a.point), th)[0] for th in theta])
+    weight = MASS * G * LENGTH * np.sin(theta)                    # the tip's weight: m g r sin(theta)
+    total = weight + 0.5 * s.k * (paths - cable_length - s.free_length) ** 2
+    assert np.ptp(total) <= 1e-9 * (MASS * G * LENGTH * (math.sin(RANGE[1] - 0.02) - math.sin(RANGE[0] + 0.02)))
+    # and the polyline of 2,000 points, written with a looser bound, does not keep 1e-9
+    coarse = _read_csv(rz.export_profile(design, tmp_path / "coarse.csv", n=2000, tolerance=1e-6))[:, 1:] / 1000.0
+    paths = np.array([_cable_from_points(coarse, np.array(s.b.point), np.array(s.a.point), th)[0] for th in theta])
+    total = weight + 0.5 * s.k * (paths - cable_length - s.free_length) ** 2
+    assert 1e-9 < np.ptp(total) / np.ptp(weight) <= 1e-6
+
+
+def test_a_misplaced_eyelet_gives_the_cable_path_of_the_cut_part_even_past_the_profiles_ends(design):
+    """path_from agrees with the cable wound on a fine polyline of the profile (profile_check's own
+    computation), also at the range's ends where the shifted eyelet pulls the cable over the part's end."""
+    from balancelab.methods.realize.profile_check import polyline_path
+
+    prof, s = design.springs[0].cable, design.springs[0]
+    pts = prof.local_points(np.linspace(-1.0, 1.0, 40001))
+    theta = np.array([RANGE[0], RANGE[0] + 0.01, 0.0, RANGE[1] - 0.01, RANGE[1]])
+    for shift in ((0.0, 0.0), (0.01, 0.0), (-0.01, 0.0), (0.0, 0.01), (0.0, -0.01)):
+        anchor = np.add(prof.anchor, shift)
+        got = prof.path_from(theta, anchor)
+        want = polyline_path(pts, theta, anchor, s.b.point, prof.turn)
+        assert np.allclose(got, want, rtol=0, atol=1e-7), shift

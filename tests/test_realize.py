@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from balancelab import G
@@ -221,3 +221,58 @@ def test_random_pulley_levers_error_shrinks(mass, r, b, c, radius):
     e1 = rz.pulley_balance_error(d, radius).variation
     e2 = rz.pulley_balance_error(d, radius / 10).variation
     assert e2 < e1 / 5
+
+
+# ------------------------------------------------------------- a normal spring in a pivoted sleeve
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mass=st.floats(0.5, 5.0), length=st.floats(0.2, 1.0), b=st.floats(0.1, 0.5), c=st.floats(0.05, 0.6),
+       free_length=st.floats(0.01, 0.3))
+def test_a_normal_spring_in_a_pivoted_sleeve_balances_the_link_exactly(mass, length, b, c, free_length):
+    assume(abs(b - c) >= 0.02)
+    d = rz.sleeve_lever(mass, length, b, c, free_length)
+    s = d.springs[0]
+    assert s.free_length == pytest.approx(free_length) and not s.is_zfl
+    assert s.k == pytest.approx(mass * G * length / (b * c), rel=1e-12)
+    assert d.balance_report().balanced
+    # the spring's ends lie on the line BC, and its length is |BC| + free_length at every angle
+    q = d.sample(200, seed=4)
+    ends = d.world_points(q, [s.a, s.b])
+    B = np.array([0.0, b])
+    C = d.world_points(q, [(1, (c, 0.0))])[:, 0]
+    bc = C - B
+    for end in (ends[:, 0], ends[:, 1]):
+        assert np.max(np.abs(bc[:, 0] * (end - B)[:, 1] - bc[:, 1] * (end - B)[:, 0])) < 1e-9
+    spring_length = np.hypot(*(ends[:, 1] - ends[:, 0]).T)
+    assert np.allclose(spring_length, np.hypot(*bc.T) + free_length, rtol=0, atol=1e-9)
+    # the link's energy: weight m g r sin(theta) plus k/2 |BC|^2, constant
+    theta = q[:, 0]
+    total = mass * G * length * np.sin(theta) + 0.5 * s.k * (spring_length - free_length) ** 2
+    assert np.ptp(total) < 1e-9 * mass * G * length
+
+
+def test_the_same_normal_spring_hung_from_b_to_c_is_not_balanced():
+    import balancelab as bl
+
+    d = rz.sleeve_lever(2.0, 0.5, 0.3, 0.2, 0.05)
+    s = d.springs[0]
+    direct = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).replace(
+        springs=[Spring(s.k, 0.05, (0, (0.0, 0.3)), (1, (0.2, 0.0)))])
+    assert d.balance_report().balanced and not direct.balance_report().balanced
+
+
+def test_the_sleeve_derivation_gives_the_lecture_rate_and_no_residual():
+    import sympy as sp
+
+    out = rz.sleeve_derivation()
+    m, g, r, b, c, theta, l0 = sp.symbols("m g r b c theta l0", positive=True)
+    assert sp.simplify(out["k"] - m * g * r / (b * c)) == 0 and out["residual"] == 0
+    assert sp.simplify(out["length"] - l0 - sp.sqrt(b ** 2 + c ** 2 - 2 * b * c * sp.sin(theta))) == 0
+    d = rz.sleeve_lever(2.0, 0.5, 0.3, 0.2, 0.05)
+    assert float(out["k"].subs({m: 2.0, g: G, r: 0.5, b: 0.3, c: 0.2})) == pytest.approx(d.springs[0].k, rel=1e-12)
+
+
+def test_sleeve_lever_refuses_bad_input_by_name():
+    for kwargs, name in (({"free_length": 0.0}, "free_length"), ({"free_length": -0.1}, "free_length"),
+                         ({"b": 0.2, "c": 0.2}, "c must differ from b"), ({"mass": float("nan")}, "mass")):
+        with pytest.raises(ValueError, match=name):
+            rz.sleeve_lever(**kwargs)

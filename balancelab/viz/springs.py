@@ -19,7 +19,7 @@ from ..core.elements import Pulley, Spring
 from ..methods.realize import pulley_string
 from .frame import STYLE
 
-__all__ = ["cable_angle", "cable_coil_end", "cable_path", "coil_path", "gas_path", "profile_outline",
+__all__ = ["cable_angle", "cable_coil_end", "cable_coil_ends", "cable_path", "coil_path", "gas_path", "profile_outline",
            "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path", "spring_style"]
 
 
@@ -278,20 +278,46 @@ def cable_angle(spring: Spring, pb) -> float:
     return float(np.angle(np.exp(1j * angle)))
 
 
-def _coil_direction(prof) -> np.ndarray:
-    u = np.asarray(prof.anchor, dtype=float)
-    return u / max(float(np.hypot(*u)), 1e-300)
+def cable_coil_ends(spring: Spring, theta) -> tuple[np.ndarray, np.ndarray]:
+    """The drawn coil of a cable spring at link angles ``theta`` (rad): its fixed end and its hook end (m).
+
+    The coil has the spring's true length, the cable's path minus the cable's length, and lies
+    on the line from the pivot through the eyelet. Its far end is fixed at the profile's
+    ``spring_anchor`` (the design's ``parameters['spring_anchor']``) and its hook end,
+    that length nearer the eyelet, pulls the cable; a hand-built profile without an anchor
+    distance gets its coil from the eyelet outwards instead.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray)
+        The fixed end and the hook end, each shape ``theta.shape + (2,)`` (m, world frame).
+
+    Examples
+    --------
+    >>> import math, balancelab as bl
+    >>> from balancelab.methods.practice.springs import ExtensionSpring
+    >>> d = bl.realize.noncircular_pulley(bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2),
+    ...     spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0), angle_range=(-1.0, 1.0),
+    ...     min_tension=45.0)
+    >>> fixed, hook = cable_coil_ends(d.springs[0], 0.2)
+    >>> bool(np.allclose(fixed, d.parameters["spring_anchor"]))
+    True
+    """
+    prof = spring.cable
+    length = np.asarray(prof.cable(theta).path - prof.cable_length)[..., None]
+    eyelet = np.add(prof.pivot, prof.anchor)
+    if prof.spring_anchor is None:
+        return eyelet + length * prof.direction, np.broadcast_to(eyelet, length.shape[:-1] + (2,))
+    fixed = np.broadcast_to(np.asarray(prof.spring_anchor), length.shape[:-1] + (2,))
+    return fixed, fixed - length * prof.direction
 
 
 def cable_coil_end(spring: Spring, theta) -> np.ndarray:
-    """Where the drawn coil of a cable spring ends (m): beyond the eyelet, away from the pivot.
+    """The fixed (far) end of the drawn coil of a cable spring (m), shape ``theta.shape + (2,)``.
 
-    The coil is drawn at its true length, the cable's path minus the cable's length.
+    The farthest the drawing reaches beyond the eyelet; see :func:`cable_coil_ends`.
     """
-    prof = spring.cable
-    length = prof.cable(theta).path - prof.cable_length
-    eyelet = np.add(prof.pivot, prof.anchor)
-    return eyelet + np.asarray(length)[..., None] * _coil_direction(prof)
+    return cable_coil_ends(spring, theta)[0]
 
 
 def profile_outline(spring: Spring, theta, n: int = 120):
@@ -309,9 +335,10 @@ def profile_outline(spring: Spring, theta, n: int = 120):
 def cable_path(spring: Spring, theta: float, size: float):
     """Polyline (x, y) of a spring whose cable wraps a non-circular pulley, at link angle ``theta`` (rad).
 
-    From the coil's far end (beyond the eyelet, at the spring's true length) to the eyelet,
-    then the cable's straight part to its tangent point on the profile and the wrapped arc
-    to the clamp, all from the design's cable geometry (``spring.cable.cable(theta)``).
+    From the coil's fixed end (the spring's anchor, :func:`cable_coil_ends`) along the coil,
+    at the spring's true length, to its hook end, the cable on to the eyelet, then its
+    straight part to the tangent point on the profile and the wrapped arc to the clamp, all
+    from the design's cable geometry (``spring.cable.cable(theta)``).
 
     Examples
     --------
@@ -327,8 +354,9 @@ def cable_path(spring: Spring, theta: float, size: float):
     prof = spring.cable
     cab = prof.cable(theta)
     eyelet = np.add(prof.pivot, prof.anchor)
-    cx, cy = coil_path(cable_coil_end(spring, theta), eyelet, 0.02 * size, turns=6)
+    fixed, hook = cable_coil_ends(spring, theta)
+    cx, cy = coil_path(fixed, hook, 0.02 * size, turns=6)
     x = np.linspace(float(cab.parameter), prof.end_parameter, 60)
     arc = prof.world(theta, prof.local_points(x))
-    return (np.concatenate([cx, [cab.tangent[0]], arc[:, 0]]),
-            np.concatenate([cy, [cab.tangent[1]], arc[:, 1]]))
+    return (np.concatenate([cx, [eyelet[0], cab.tangent[0]], arc[:, 0]]),
+            np.concatenate([cy, [eyelet[1], cab.tangent[1]], arc[:, 1]]))

@@ -8,7 +8,8 @@ the work of an adjustment) and ``forces`` (spring forces, generalized forces and
 loads). Course chapter 8 ("From ideal to real") uses them.
 
 What it may import: ``balancelab.core``, ``balancelab.mechanisms`` and the other method
-families' building blocks (``lecture``); never ``viz`` or ``course``.
+families' building blocks (``lecture``, and ``realize`` for the exact string-over-pulley model
+and the cable on a non-circular pulley); never ``viz`` or ``course``.
 """
 from . import forces, friction, payload, routing, selection, springs, tolerance
 

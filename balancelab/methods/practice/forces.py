@@ -20,7 +20,15 @@ Two independent routes to the same statics:
 :func:`compare_free_choices` ranks the members of a family of balanced designs (for
 instance the free choices ``a_x`` of Singh's minimum-preload 2R) by their largest
 spring force and joint load: designs with the same energy can load their parts very
-differently. Layer: methods (imports core only).
+differently.
+
+A spring whose cable wraps a non-circular pulley (``spring.cable``, a
+:class:`~balancelab.methods.realize.NoncircularProfile`) is included through its cable: its
+tension is ``k (L - free_length)`` with ``L`` the spring's length along the cable, its
+generalized force ``T dL/dq`` (central differences of the cable's length), and the cable
+pulls the link with the tension along its straight part, at the tangent point (the wrapped
+part and the clamp add up to that), and the ground at the eyelet and the spring's anchor.
+Layer: methods (imports core, and realize for the cable's geometry).
 """
 from __future__ import annotations
 
@@ -30,6 +38,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.validation import finite_real, positive_int
+from ..realize.profile import NoncircularProfile
 
 __all__ = ["configurations", "pose_jacobian", "spring_forces", "generalized_force", "batch_generalized_force",
            "JointLoads", "joint_tree", "joint_loads", "compare_free_choices"]
@@ -151,7 +160,9 @@ def batch_generalized_force(design: Design, q, **values) -> np.ndarray:
         Optional arrays with a leading sample axis ``N``: ``k (N, n_springs)``,
         ``free_length (N, n_springs)``, ``a_points``/``b_points (N, n_springs, 2)`` (local),
         ``load_points (N, n_loads, 2)`` and ``load_scale (N, n_loads)`` (a factor on each
-        load's force: a mass error). Missing ones are the design's own.
+        load's force: a mass error). Missing ones are the design's own. For a spring on a
+        non-circular pulley ``a_points`` moves its eyelet (the tangent point follows) and
+        ``b_points`` its clamp, which lengthens the cable by the move along the profile.
 
     Examples
     --------
@@ -174,6 +185,9 @@ def batch_generalized_force(design: Design, q, **values) -> np.ndarray:
         w = np.concatenate([np.ones((N, 1)), p["load_points"][:, i]], -1) * p["load_scale"][:, i, None]
         Q += w @ dB.reshape(3, m * dof)
     for i, s in enumerate(design.springs):
+        if s.cable is not None:
+            Q += _cable_generalized_force(design, q, i, p).reshape(N, m * dof)
+            continue
         B, dB = _basis_and_derivative(design, q, lambda P, s=s: _spring_basis(P, s.a.body, s.b.body))
         w, const = _spring_coefficients(p["a_points"][:, i], p["b_points"][:, i])
         k, l0 = p["k"][:, i, None], p["free_length"][:, i, None]
@@ -191,6 +205,43 @@ def batch_generalized_force(design: Design, q, **values) -> np.ndarray:
         Q += dS
     Q = Q.reshape(N, m, dof)
     return Q
+
+
+def _cable_of(design: Design, i: int) -> NoncircularProfile:
+    cab = design.springs[i].cable
+    if not isinstance(cab, NoncircularProfile):
+        raise NotImplementedError(f"{design.name}: spring {i} runs along a cable path of type {type(cab).__name__}; "
+                                  "forces know the cable of a non-circular pulley (NoncircularProfile) only")
+    return cab
+
+
+def _clamp_direction(cab: NoncircularProfile) -> np.ndarray:
+    """Unit tangent (link frame) at the cable's clamp, pointing on past the wrapped arc."""
+    end = cab.end_parameter
+    t = cab.local_points(end) - cab.local_points(end - 1e-6 * end)
+    return t / float(np.hypot(*t))
+
+
+def _cable_generalized_force(design: Design, q, i: int, p: dict) -> np.ndarray:
+    """``T dL/dq`` ``(N, m, dof)`` of cable spring ``i`` for the per-sample parameters ``p``.
+
+    ``L`` is the spring's length along the cable from the (possibly misplaced) eyelet;
+    a misplaced clamp shortens the spring by the move along the profile beyond its end.
+    """
+    s, cab = design.springs[i], _cable_of(design, i)
+    anchor = np.asarray(cab.anchor) + (p["a_points"][:, i] - np.asarray(s.a.point))      # (N, 2)
+    extra = (p["b_points"][:, i] - np.asarray(s.b.point)) @ _clamp_direction(cab)      # (N,)
+    nominal = not (np.any(anchor != np.asarray(cab.anchor)) or np.any(extra != 0))
+
+    def length(P):
+        theta = P[:, s.b.body, 2]
+        if nominal:
+            return np.broadcast_to(cab.cable(theta).path - cab.cable_length, (len(anchor), len(theta)))
+        return cab.path_from(theta[None, :], anchor[:, None, :]) - cab.cable_length + extra[:, None]
+
+    L, dL = _basis_and_derivative(design, q, length)
+    tension = p["k"][:, i, None] * (L - p["free_length"][:, i, None])
+    return tension[..., None] * dL
 
 
 def generalized_force(design: Design, q=None, n: int = 61) -> tuple[np.ndarray, np.ndarray]:
@@ -212,6 +263,8 @@ def generalized_force(design: Design, q=None, n: int = 61) -> tuple[np.ndarray, 
 def spring_forces(design: Design, q) -> np.ndarray:
     """Tension ``T = k (L - free_length)`` (N) of every spring, shape ``(..., n_springs)``.
 
+    A spring on a non-circular pulley: ``L`` is its length along the cable.
+
     Examples
     --------
     >>> import balancelab as bl
@@ -225,6 +278,10 @@ def spring_forces(design: Design, q) -> np.ndarray:
     w = design.world_points(q, ends)
     d = w[..., 1::2, :] - w[..., 0::2, :]
     L = np.sqrt(np.sum(d * d, -1))
+    for i, s in enumerate(design.springs):
+        if s.cable is not None:        # the length along the cable (the design's own model)
+            P = design.poses(q)
+            L[..., i] = _cable_of(design, i).length(P[..., s.a.body, :], P[..., s.b.body, :])
     return np.array([s.k for s in design.springs]) * (L - np.array([s.free_length for s in design.springs]))
 
 
@@ -275,6 +332,26 @@ def joint_tree(design: Design) -> tuple:
     return tuple(frozenset(beyond(child_of[j])) for j in range(len(joints)))
 
 
+def _cable_forces(design: Design, q, i: int, tension) -> list:
+    """``(body, point, force)`` of cable spring ``i``: on the link at the tangent point, on the ground.
+
+    The cable leaves the profile at the tangent point along its straight part, so the link
+    feels the tension along that line there; on the ground the spring's anchor is pulled
+    towards the eyelet and the eyelet by both strands (their sum is the opposite force).
+    """
+    s, cab = design.springs[i], _cable_of(design, i)
+    P = design.poses(q)
+    geo = cab.cable(P[:, s.b.body, 2])
+    pull = geo.anchor - geo.tangent
+    pull = pull / np.linalg.norm(pull, axis=-1, keepdims=True)
+    out = [(s.b.body, geo.tangent, tension[:, None] * pull)]
+    if cab.spring_anchor is None:       # the spring's far end unknown: the whole pull on the eyelet
+        return out + [(s.a.body, geo.anchor, -tension[:, None] * pull)]
+    away = np.broadcast_to(cab.direction, pull.shape)
+    return out + [(s.a.body, geo.anchor, tension[:, None] * (away - pull)),
+                  (s.a.body, np.broadcast_to(cab.spring_anchor, pull.shape), -tension[:, None] * away)]
+
+
 def _external_forces(design: Design, q):
     """List of ``(body, world point (m, 2), force (m, 2))`` of every load and spring end."""
     out = []
@@ -285,6 +362,9 @@ def _external_forces(design: Design, q):
         T = spring_forces(design, q)
         w = design.world_points(q, [at for s in design.springs for at in (s.a, s.b)])
         for i, s in enumerate(design.springs):
+            if s.cable is not None:
+                out.extend(_cable_forces(design, q, i, T[:, i]))
+                continue
             ra, rb = w[:, 2 * i], w[:, 2 * i + 1]
             d = rb - ra
             u = d / np.linalg.norm(d, axis=-1, keepdims=True)

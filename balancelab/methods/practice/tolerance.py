@@ -10,7 +10,11 @@ once per group of parameters to say which tolerance matters most.
 
 Closed-form check (the tests use it): for the lecture's link with a ZFL spring whose
 rate is off by a fraction ``e``, ``dV/dtheta = -e m g r cos(theta)``, so the worst
-residual over ``[-90 deg, 90 deg]`` is ``|e| m g r``. Layer: methods.
+residual over ``[-90 deg, 90 deg]`` is ``|e| m g r``. The same holds for a real spring whose
+cable wraps a non-circular pulley (its tension is ``1 + e`` times the one that balances);
+there ``attachment`` moves the eyelet (the tangent point follows) and the cable's clamp
+(the cable then ends that much farther along the profile), see
+:func:`balancelab.methods.practice.forces.batch_generalized_force`. Layer: methods.
 """
 from __future__ import annotations
 
@@ -37,7 +41,7 @@ class Tolerances(_TolerancesFields):
 
     ``k``: relative error of every spring rate (0.05 = 5 %); ``free_length``: absolute
     error of every free length (m); ``attachment``: absolute error of each coordinate of
-    every spring end (m); ``mass``: relative error of every load (a mass error). Each
+    every spring end (m; for a cable on a non-circular pulley, its eyelet and its clamp); ``mass``: relative error of every load (a mass error). Each
     must be finite and >= 0 (checked on construction).
 
     Examples

@@ -13,8 +13,12 @@ One module per concept:
 * :mod:`.negative`: an ordinary spring with a negative-free-length partner;
 * :mod:`.optimizer`: the best ordinary spring placed by an optimizer (approximate balance);
 * :mod:`.noncircular`: a cable from a real spring wound on a non-circular pulley whose
-  profile makes the balance exact (:func:`noncircular_pulley`), and :mod:`.profile_export`,
-  the profile as SVG, DXF and CSV files at true scale.
+  profile makes the balance exact (:func:`noncircular_pulley`), :mod:`.noncircular_synthesis`
+  (the profile from the energy it balances, and whether a cable can wrap it), :mod:`.profile`
+  (the profile's geometry and the cable on it) and :mod:`.profile_export`,
+  the profile as SVG, DXF and CSV files at true scale, checked as written (:mod:`.profile_check`);
+* :mod:`.sleeve`: a normal spring mounted between a sleeve pivoted at the anchor and a rod
+  sliding in it, which balances the lecture's link exactly (:func:`sleeve_lever`).
 
 Every name is importable from ``balancelab.methods.realize`` (``bl.realize``).
 """
@@ -26,6 +30,7 @@ from .optimizer import ApproximationError, approximate_lever
 from .profile import CableGeometry, NoncircularProfile, ProfileError
 from .noncircular import noncircular_pulley, spring_limits
 from .profile_export import ProfilePart, export_profile, profile_part
+from .sleeve import sleeve_derivation, sleeve_lever
 
 __all__ = [
     "PulleyString",
@@ -47,4 +52,6 @@ __all__ = [
     "ProfilePart",
     "profile_part",
     "export_profile",
+    "sleeve_lever",
+    "sleeve_derivation",
 ]

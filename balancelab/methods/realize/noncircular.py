@@ -25,8 +25,7 @@ from __future__ import annotations
 
 import copy
 import math
-import re
-import warnings
+from types import MappingProxyType
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -36,12 +35,11 @@ from ...core.elements import Spring
 from ...core.validation import finite_real, finite_reals, instance_of, planar_point
 from ...mechanisms.base import TreeKinematics
 from ..practice.springs import ExtensionSpring
+from .noncircular_synthesis import DEGREES, at_floor, choose_turn, pivot_inside, search_tension
 from .profile import NoncircularProfile, ProfileError
 
 __all__ = ["noncircular_pulley", "spring_limits", "ProfileError"]
 
-#: Chebyshev degrees tried for the energy and the profile (doubling until the tail is round-off)
-_DEGREES = (32, 64, 128, 256)
 
 
 def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) -> dict:
@@ -148,7 +146,7 @@ def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: 
     rest = design.replace(springs=[s for i, s in enumerate(design.springs) if i != spring],
                           kinematics=_restricted(design, coordinate, lo, hi))
     span = rest.q_range
-    for n in _DEGREES:
+    for n in DEGREES:
         x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
         q = np.repeat([span[:, 0] + 0.5 * (span[:, 1] - span[:, 0])], n, axis=0)
         q[:, coordinate] = 0.5 * (lo + hi) + 0.5 * (hi - lo) * x
@@ -165,173 +163,6 @@ def _energy_series(design: Design, spring: int, coordinate: int, lo: float, hi: 
         raise ValueError(f"{design.name}: without spring {spring} the energy along {design.q_names[coordinate]} "
                          f"also depends on the other coordinates (by {drift:.3g} J): one profile cannot balance it")
     return coef
-
-
-def _synthesis(v_coef, k: float, min_tension: float, anchor, turn: int, lo: float, hi: float, n: int):
-    """Support function and normal angle at ``n`` Chebyshev nodes, and the tension there."""
-    half = 0.5 * (hi - lo)
-    x = np.cos(np.pi * (np.arange(n) + 0.5) / n)
-    theta = 0.5 * (lo + hi) + half * x
-    v = cheb.chebval(x, v_coef)
-    dv = turn * cheb.chebval(x, cheb.chebder(v_coef)) / half        # dV/d(canonical angle)
-    fine = cheb.chebval(np.linspace(-1, 1, 4001), v_coef)
-    top = max(float(fine.max()), float(v.max()))
-    tension = np.sqrt(min_tension ** 2 + 2 * k * (top - v))
-    h = -dv / tension
-    ax, ay = anchor[0], turn * anchor[1]
-    rho, alpha = math.hypot(ax, ay), math.atan2(ay, ax)
-    worst = int(np.argmax(np.abs(h)))
-    if abs(h[worst]) >= rho:
-        raise ProfileError(
-            f"the cable's line must pass {abs(h[worst]):.4g} m from the pivot at {math.degrees(theta[worst]):.2f}°, "
-            f"but the eyelet is only {rho:.4g} m from it: move the eyelet at least "
-            f"{abs(h[worst]) - rho:.3g} m farther, or raise min_tension (now {min_tension:.4g} N)")
-    psi = alpha - turn * theta + np.arccos(h / rho)
-    return x, theta, h, psi, tension
-
-
-def _profile(v_coef, k, min_tension, anchor, turn, lo, hi):
-    """The profile's Chebyshev series, at the smallest degree whose tail is round-off."""
-    for n in _DEGREES:
-        x, theta, h, psi, tension = _synthesis(v_coef, k, min_tension, anchor, turn, lo, hi, n)
-        ch, cp = cheb.chebfit(x, h, n - 1), cheb.chebfit(x, psi, n - 1)
-        tail = max(np.max(np.abs(ch[-4:])) / np.max(np.abs(ch)), np.max(np.abs(cp[-4:])) / np.max(np.abs(cp)))
-        if tail < 1e-14:
-            break
-    return ch, cp, (x, theta, tension)
-
-
-def _check_wrappable(profile: NoncircularProfile, cable_bend_radius: float) -> dict:
-    """Convexity, curvature and a cable that reaches the profile from the right side, or ProfileError."""
-    x = np.linspace(-1.0, 1.0, 2001)
-    theta = profile.mid + profile.half * x
-    dpsi = cheb.chebval(x, cheb.chebder(profile.psi))
-    if not (np.all(dpsi < 0) or np.all(dpsi > 0)):
-        i = int(np.argmin(np.abs(dpsi)))
-        raise ProfileError(f"the cable's line stops turning relative to the link at {math.degrees(theta[i]):.2f}°: "
-                           "the lines have no envelope there (no profile); change min_tension or the eyelet")
-    rc = profile.radius_of_curvature(x)
-    i = int(np.argmin(rc))
-    if rc[i] <= 0:
-        raise ProfileError(f"the profile would be concave at {math.degrees(theta[i]):.2f}° (radius of curvature "
-                           f"{1000 * rc[i]:.3g} mm): a cable cannot wrap a concave arc; lower min_tension or use "
-                           "a stiffer spring (a larger change of tension over the range)")
-    if rc[i] < cable_bend_radius:
-        raise ProfileError(f"the profile's smallest radius of curvature, {1000 * rc[i]:.3g} mm at "
-                           f"{math.degrees(theta[i]):.2f}°, is below the cable's bending radius (cable_bend_radius) "
-                           f"{1000 * cable_bend_radius:.3g} mm by {1000 * (cable_bend_radius - rc[i]):.3g} mm")
-    h, psi = profile.support(x)
-    straight = profile.rho * np.sin(psi + profile.turn * theta - profile.alpha) + \
-        cheb.chebval(x, cheb.chebder(profile.h)) / dpsi
-    j = int(np.argmin(straight))
-    if straight[j] <= 0:
-        raise ProfileError(f"at {math.degrees(theta[j]):.2f}° the eyelet lies on the wrong side of the tangent "
-                           "point (the cable would have to wrap the other way): use the other turn")
-    return {"min_radius_of_curvature": float(rc[i]), "min_straight": float(straight[j])}
-
-
-def _kind(err: ProfileError) -> str:
-    """What failed, without the numbers: two tensions failing differently may hold a feasible one between."""
-    return re.sub(r"-?[\d.]+", "#", str(err))[:48]
-
-
-def _at_floor(err: ProfileError, tension: float, floor: float) -> ProfileError:
-    """The refusal at ``tension``; at the spring's initial tension it cannot advise a lower one."""
-    if tension > floor * (1 + 1e-12):
-        return err
-    text = str(err).replace("lower min_tension or use a stiffer spring", "min_tension is already the spring's "
-                            "initial tension (the lowest possible): use a stiffer spring")
-    text = text.replace("change min_tension or the eyelet", "raise min_tension or move the eyelet")
-    text = text.replace("choose a stronger spring or a lower min_tension", "choose a stronger spring (min_tension "
-                        "is already its initial tension)")
-    return ProfileError(text)
-
-
-def _search_tension(v_coef, k, spring_model, limit, eyelet, turn, lo, hi, bounds):
-    """No ``min_tension`` given: the most compact wrappable profile, for tensions up to ``limit``.
-
-    A geometric grid of tensions, then bisection between neighbours that fail for different
-    reasons (a feasible band may lie between them).
-    """
-    start = max(spring_model.initial_tension, 0.02 * limit)
-    found, failed = {}, {}
-
-    def attempt(tension):
-        try:
-            built = _choose_turn(v_coef, k, tension, eyelet, turn, lo, hi, bounds)
-        except ProfileError as err:
-            failed[tension] = err
-            return False
-        found[tension] = (built, built[1]["size"])
-        return True
-
-    grid = [float(t) for t in np.geomspace(start, limit, 40)] if limit > start else [start]
-    for tension in grid:
-        attempt(tension)
-    for a, b in zip(grid, grid[1:]):
-        if a in failed and b in failed and _kind(failed[a]) != _kind(failed[b]):
-            ka = _kind(failed[a])
-            while b - a > 1e-7 * b:
-                mid = 0.5 * (a + b)
-                if attempt(mid):
-                    break
-                a, b = (mid, b) if _kind(failed[mid]) == ka else (a, mid)
-    if not found:
-        err = _at_floor(failed[start], start, spring_model.initial_tension)
-        raise ProfileError(f"none found: no wrappable profile among {len(failed)} values of min_tension from "
-                           f"{start:.4g} N to {limit:.4g} N (a geometric grid of 40, refined by bisection where "
-                           f"the reason for failing changes; above {limit:.4g} N the spring is overstressed at the "
-                           f"range's end); pass min_tension to try another; at {start:.4g} N: {err}")
-    best = min(found, key=lambda t: found[t][1])
-    return best, found[best][0]
-
-
-def _build(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
-    ch, cp, (x, theta, tension) = _profile(v_coef, k, min_tension, eyelet, turn, lo, hi)
-    profile = NoncircularProfile(ch, cp, (lo, hi), eyelet, (0.0, 0.0), turn, 0.0)
-    checks = _check_wrappable(profile, bounds[0])
-    x = np.linspace(-1.0, 1.0, 401)
-    reach = np.hypot(*profile.local_points(x).T)
-    far = int(np.argmax(reach))
-    size = float(reach[far])
-    if size > bounds[1]:
-        raise ProfileError(f"the profile would reach {size:.3g} m from the pivot (where the cable leaves it at "
-                           f"link angle {math.degrees(profile.mid + profile.half * x[far]):.2f}°), more than max_size "
-                           f"{bounds[1]:.3g} m (by default 4 times the linkage's size); raise min_tension or move "
-                           "the eyelet, or pass a larger max_size")
-    checks["size"] = size
-    return profile, checks, theta, tension
-
-
-def _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds):
-    """The profile for ``turn``, or (``turn=None``) for the wrap that holds the pivot inside, else the other."""
-    if turn is not None:
-        if isinstance(turn, bool) or turn not in (1, -1):
-            raise ValueError(f"turn must be 1 (counter-clockwise), -1 (clockwise) or None, got {turn!r}")
-        return _build(v_coef, k, min_tension, eyelet, int(turn), lo, hi, bounds)
-    mean_slope = cheb.chebval(np.linspace(-1, 1, 101), cheb.chebder(v_coef)).mean()
-    first = -1 if mean_slope > 0 else 1      # h = -turn V'/T > 0: the pivot inside the profile
-    try:
-        return _build(v_coef, k, min_tension, eyelet, first, lo, hi, bounds)
-    except ProfileError as err:
-        try:
-            return _build(v_coef, k, min_tension, eyelet, -first, lo, hi, bounds)
-        except ProfileError:
-            raise err from None
-
-
-def _pivot_inside(profile: NoncircularProfile) -> float:
-    """The cable line's smallest distance from the pivot (m); warns when the pivot lies outside the profile."""
-    x = np.linspace(-1.0, 1.0, 2001)
-    h = cheb.chebval(x, profile.h)
-    i = int(np.argmin(h))
-    if h[i] <= 0:
-        warnings.warn(f"the pivot lies outside the profile (at link angle "
-                      f"{math.degrees(profile.mid + profile.half * x[i]):.2f}° the cable's line passes "
-                      f"{1000 * -h[i]:.3g} mm beyond it): the design balances, but the pulley needs an arm out to its "
-                      "axle and profile_part cannot cut it; the other turn, another eyelet or min_tension may keep "
-                      "the pivot inside", UserWarning, stacklevel=3)
-    return float(h[i])
 
 
 def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
@@ -416,8 +247,11 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         ``cable_length`` (m, the cable from the spring's hook end through the eyelet to
         ``E``), so that the spring's length is
         ``anchor_distance + path - cable_length`` with ``path`` the cable's path from the
-        eyelet to ``E`` (:meth:`.NoncircularProfile.cable`); all of the spring just
-        replaced. The design's range of that coordinate is ``(lo, hi)``.
+        eyelet to ``E`` (:meth:`.NoncircularProfile.cable`). These flat keys describe the
+        spring just replaced; ``pulleys`` maps the index of *every* spring replaced so far
+        (the two springs of the 2R lamp arm, say) to a read-only mapping of its own keys
+        above, so that each cable spring keeps its rate, free length, anchor and limits.
+        The design's range of that coordinate is ``(lo, hi)``.
 
     Raises
     ------
@@ -455,16 +289,16 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         top = math.sqrt(max(limit ** 2 - 2 * k * exchange, 0.0))   # highest smallest tension within the limit
         _check_spring(spring_model, k, spring_model.initial_tension, math.hypot(spring_model.initial_tension,
                       math.sqrt(2 * k * exchange)), cycles)
-        min_tension, found = _search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, bounds)
+        min_tension, found = search_tension(v_coef, k, spring_model, top, eyelet, turn, lo, hi, bounds)
     else:
         min_tension = finite_real("min_tension (N)", min_tension, positive=True)
         _check_spring(spring_model, k, min_tension, math.hypot(min_tension, math.sqrt(2 * k * exchange)), cycles)
         try:
-            found = _choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds)
+            found = choose_turn(v_coef, k, min_tension, eyelet, turn, lo, hi, bounds)
         except ProfileError as err:
-            raise _at_floor(err, min_tension, spring_model.initial_tension) from None
+            raise at_floor(err, min_tension, spring_model.initial_tension) from None
     profile, checks, theta, tension = found
-    checks["min_lever_arm"] = _pivot_inside(profile)
+    checks["min_lever_arm"] = pivot_inside(profile)
     # the largest tension is where the rest's energy is lowest (the range's ends included, not only the nodes)
     largest = max(math.hypot(min_tension, math.sqrt(2 * k * exchange)), float(np.max(tension)))
     sp_checks = _check_spring(spring_model, k, min_tension, largest, cycles)
@@ -477,14 +311,12 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     k, l_eq = spring_model.k, spring_model.equivalent_free_length
     path = profile.cable(theta).path
     cable_length = float(np.mean(path - (tension / k + l_eq)))
-    profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
-                                 profile.turn, cable_length)
-    end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
     # the spring hangs from a ground anchor on the line pivot -> eyelet, beyond the eyelet by the longest
     # spring plus a coil diameter; its hook end pulls the cable through the eyelet to the clamp E
-    away = np.asarray(profile.anchor) / math.hypot(*profile.anchor)
     reach = numbers["max_length"] + spring_model.coil_diameter
-    spring_anchor = tuple(float(v) for v in np.add(profile.pivot, profile.anchor) + reach * away)
+    profile = NoncircularProfile(profile.h, profile.psi, profile.angle_range, profile.anchor, profile.pivot,
+                                 profile.turn, cable_length, anchor_distance=reach)
+    end = tuple(float(v) for v in profile.local_points(profile.end_parameter))
     spring, coordinate = which
     body = old.b.body if old.a.body == 0 else old.a.body
     new = Spring(k, l_eq, (0, profile.anchor), (body, end), name=old.name or f"k{spring + 1}",
@@ -492,10 +324,13 @@ def _assemble(design, which, old, spring_model, profile, theta, tension, numbers
     springs = list(design.springs)
     springs[spring] = new
     lo, hi = profile.angle_range
-    params = {**design.parameters, "k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension,
-              **numbers, "cable_length": reach + cable_length, "spring_anchor": spring_anchor,
-              "eyelet": tuple(float(v) for v in np.add(profile.pivot, profile.anchor)),
-              "anchor_distance": reach, "clamp": end}
+    own = {"k": k, "free_length": l_eq, "initial_tension": spring_model.initial_tension, **numbers,
+           "cable_length": reach + cable_length, "spring_anchor": profile.spring_anchor,
+           "eyelet": tuple(float(v) for v in np.add(profile.pivot, profile.anchor)),
+           "anchor_distance": reach, "clamp": end}
+    pulleys = dict(design.parameters.get("pulleys", {}))
+    pulleys[spring] = MappingProxyType(own)
+    params = {**design.parameters, **own, "pulleys": MappingProxyType(dict(sorted(pulleys.items())))}
     labels = dict(design.labels)
     if not any(b == 0 and np.allclose(p, profile.anchor) for b, p in labels.values()):
         labels["eyelet"] = (0, profile.anchor)

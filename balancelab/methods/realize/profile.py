@@ -81,6 +81,10 @@ class NoncircularProfile(CablePath):
         The path's length minus the spring's length (m): the cable from the spring's end
         to the clamp ``E`` less the spring's anchor distance beyond the eyelet (the design's
         ``parameters`` give both, ``cable_length`` and ``anchor_distance``).
+    anchor_distance : float, optional
+        How far (m, > 0) beyond the eyelet, on the line from the pivot through it, the
+        spring's far end is fixed to the ground (:attr:`spring_anchor`); ``None`` when not
+        known (a hand-built profile): the spring is then drawn beyond the eyelet.
 
     Examples
     --------
@@ -93,7 +97,8 @@ class NoncircularProfile(CablePath):
     0.02
     """
 
-    def __init__(self, h, psi, angle_range, anchor, pivot, turn: int, cable_length: float):
+    def __init__(self, h, psi, angle_range, anchor, pivot, turn: int, cable_length: float,
+                 anchor_distance: float | None = None):
         self.h = np.asarray(h, dtype=float)
         self.psi = np.asarray(psi, dtype=float)
         lo, hi = (float(v) for v in angle_range)
@@ -105,6 +110,11 @@ class NoncircularProfile(CablePath):
             raise ValueError(f"turn must be 1 or -1, got {turn!r}")
         self.turn = int(turn)
         self.cable_length = float(cable_length)
+        if anchor_distance is not None:
+            anchor_distance = float(anchor_distance)
+            if not (math.isfinite(anchor_distance) and anchor_distance > 0):
+                raise ValueError(f"anchor_distance must be a finite length > 0 (m) or None, got {anchor_distance}")
+        self.anchor_distance = anchor_distance
         ax, ay = self.anchor[0], self.turn * self.anchor[1]
         self.rho, self.alpha = math.hypot(ax, ay), math.atan2(ay, ax)
         self._dh, self._dpsi = cheb.chebder(self.h), cheb.chebder(self.psi)
@@ -120,6 +130,20 @@ class NoncircularProfile(CablePath):
 
     def __str__(self) -> str:
         return "cable over a non-circular pulley"
+
+    @property
+    def direction(self) -> np.ndarray:
+        """Unit vector from the pivot through the eyelet: the spring hangs on this line beyond the eyelet."""
+        u = np.asarray(self.anchor, dtype=float)
+        return u / max(float(np.hypot(*u)), 1e-300)
+
+    @property
+    def spring_anchor(self) -> tuple[float, float] | None:
+        """World point (m) where the spring's far end is fixed, ``anchor_distance`` beyond the eyelet, or ``None``."""
+        if self.anchor_distance is None:
+            return None
+        point = np.add(self.pivot, self.anchor) + self.anchor_distance * self.direction
+        return (float(point[0]), float(point[1]))
 
     # --------------------------------------------------------- the curve itself
     def _canonical(self, theta):
@@ -172,21 +196,66 @@ class NoncircularProfile(CablePath):
         outside = ~(np.abs(theta - self.mid) <= self.half * (1 + _EDGE))     # NaN counts as outside
         if np.any(outside):
             self._refuse(theta[outside] if theta.ndim else theta)
-        s = self._canonical(theta)
-        x = np.clip((theta - self.mid) / self.half, -1.0, 1.0)
-        for _ in range(60):
-            h, psi = self.support(x)
-            beta = psi + s - self.alpha
-            g = self.rho * np.cos(beta) - h
-            dg = -self.rho * np.sin(beta) * cheb.chebval(x, self._dpsi) - cheb.chebval(x, self._dh)
-            step = g / dg
-            x = x - step
-            if np.all(np.abs(step) < 1e-11):   # converging quadratically: x is now exact to round-off
-                break
+        x = self._tangent(theta, self.rho, self.alpha)
         bad = np.abs(x) > 1 + _EDGE
         if np.any(bad) or not np.all(np.isfinite(x)):
             self._refuse(theta[bad | ~np.isfinite(x)] if theta.ndim else theta)
         return x
+
+    def _tangent(self, theta, rho, alpha):
+        """Newton's method on the tangency, eyelet at distance ``rho`` and angle ``alpha`` (canonical frame)."""
+        s = self._canonical(theta)
+        x = np.clip((theta - self.mid) / self.half, -1.0, 1.0)
+        x = x + 0 * rho
+        for _ in range(60):
+            h, psi = self.support(x)
+            beta = psi + s - alpha
+            g = rho * np.cos(beta) - h
+            dg = -rho * np.sin(beta) * cheb.chebval(x, self._dpsi) - cheb.chebval(x, self._dh)
+            step = g / dg
+            x = x - step
+            if np.all(np.abs(step) < 1e-11):   # converging quadratically: x is now exact to round-off
+                break
+        return x
+
+    def path_from(self, theta, anchor) -> np.ndarray:
+        """The cable's path (m) at link angles ``theta`` (rad) from eyelets ``anchor`` other than the design's.
+
+        The built part with its eyelet misplaced: ``anchor`` (world frame relative to the pivot, m,
+        shape ``(..., 2)``) broadcasts with ``theta``; the profile, the clamp and the cable are the
+        design's. A misplaced eyelet moves the tangent point; where it would move past one of the
+        profile's ends the cable bends over that end instead (straight from the eyelet to the end
+        point, then wrapped from there, or straight to the clamp).
+
+        Raises
+        ------
+        ProfileError
+            Where the tangency cannot be solved (the eyelet far off).
+
+        Examples
+        --------
+        >>> psi0 = math.pi / 2 + math.acos(0.02 / 0.3)
+        >>> p = NoncircularProfile([0.02], [psi0, -1.0], (-1.0, 1.0), (0.0, 0.3), (0.0, 0.0), 1, 0.0)
+        >>> bool(np.isclose(p.path_from(0.5, [0.0, 0.3]), p.cable(0.5).path))
+        True
+        """
+        theta = np.asarray(theta, dtype=float)
+        anchor = np.asarray(anchor, dtype=float)
+        ax, ay = anchor[..., 0], self.turn * anchor[..., 1]
+        rho, alpha = np.hypot(ax, ay), np.arctan2(ay, ax)
+        x = self._tangent(theta, rho, alpha)
+        if not np.all(np.isfinite(x)):
+            self._refuse(np.broadcast_to(theta, x.shape)[~np.isfinite(x)])
+        inside = np.abs(x) <= 1.0
+        x = np.clip(x, -1.0, 1.0)
+        h, psi = self.support(x)
+        straight = rho * np.sin(psi + self._canonical(theta) - alpha) + self._h_psi(x)
+        if not np.all(inside):     # over an end of the profile: straight from the eyelet to that end
+            ends = self.world(np.broadcast_to(theta, x.shape), self.local_points(x))
+            gap_x = ends[..., 0] - (self.pivot[0] + anchor[..., 0])
+            gap_y = ends[..., 1] - (self.pivot[1] + anchor[..., 1])
+            straight = np.where(inside, straight, np.hypot(gap_x, gap_y))
+        return straight + self.arc_length(self.end_parameter) - self.arc_length(x)
 
     def _refuse(self, where) -> None:
         lo, hi = np.degrees(self.angle_range)

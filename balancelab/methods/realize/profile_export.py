@@ -12,7 +12,8 @@ millimetres. Three outlines and a hole:
 * ``axle``: the axle hole, a circle at the pivot.
 
 Stack a flange, the core plate and a flange (or print the three as one part) and fix them
-to the link with the x mark along the link. The DXF is written with ``ezdxf`` (the ``cad``
+to the link with the x mark along the link. An export first checks that the cable wound on
+the polyline it writes still balances the design (:mod:`.profile_check`). The DXF is written with ``ezdxf`` (the ``cad``
 extra: ``pip install balancelab[cad]``).
 """
 from __future__ import annotations
@@ -27,9 +28,18 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.validation import finite_real, instance_of, positive_int
+from ...core.report import BALANCE_TOLERANCE
 from .profile import NoncircularProfile
+from .profile_check import polyline_variation
 
 __all__ = ["ProfilePart", "profile_part", "export_profile"]
+
+#: decimals of a millimetre the SVG and CSV files give their points (DXF stores doubles): rounding
+#: to 0.1 um would move the cable's path enough to spoil the balance bound (the check uses these)
+DIGITS = 9
+
+#: the most points an export writes while raising ``n`` to keep the balance bound
+MAX_POINTS = 200_000
 
 _LAYERS = {"groove": 1, "flange": 5, "pitch": 3, "axle": 1, "mark": 7}   # DXF colour numbers
 
@@ -189,7 +199,7 @@ def _svg(part: ProfilePart, path: Path) -> None:
     w, h = hi - lo
 
     def d(points, closed):
-        body = " ".join(f"{x:.4f},{-y:.4f}" for x, y in points * mm)
+        body = " ".join(f"{x:.{DIGITS}f},{-y:.{DIGITS}f}" for x, y in points * mm)
         return f"M {body}" + (" Z" if closed else "")
 
     r = part.axle_diameter / 2 * mm
@@ -232,11 +242,40 @@ def _csv(part: ProfilePart, path: Path) -> None:
         w = csv.writer(f)
         w.writerow(["link_angle_deg", "x_mm", "y_mm"])
         for a, (x, y) in zip(np.degrees(part.link_angle), part.pitch * 1000.0):
-            w.writerow([f"{a:.6f}", f"{x:.6f}", f"{y:.6f}"])
+            w.writerow([f"{a:.6f}", f"{x:.{DIGITS}f}", f"{y:.{DIGITS}f}"])
 
 
-def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
+def _verified_part(design: Design, spring: int, n, tolerance: float, options: dict) -> tuple[ProfilePart, float]:
+    """The part with enough points that the cable on its polyline keeps the balance bound, and its variation.
+
+    ``n`` given: that many points or a ValueError naming ``n``; ``None``: from 2,000 points up, the
+    variation falling as ``1/n^2`` (:mod:`.profile_check`), at most :data:`MAX_POINTS`.
+    """
+    count = 2000 if n is None else positive_int("n (points on the pitch curve, at least 10)", n, minimum=10)
+    for _ in range(6):
+        part = profile_part(design, spring, n=count, **options)
+        variation = polyline_variation(design, spring, np.round(part.pitch * 1000.0, DIGITS) / 1000.0)
+        if variation <= tolerance:
+            return part, variation
+        needed = int(math.ceil(count * math.sqrt(variation / tolerance) * 1.15 / 100.0)) * 100
+        if n is not None or needed > MAX_POINTS:
+            break
+        count = max(needed, count + 100)
+    advice = (f"about {needed} points would (n={needed}, or n=None to let the export choose)" if needed <= MAX_POINTS
+              else f"about {needed} would, more than the {MAX_POINTS} an export writes")
+    raise ValueError(f"n={count} points on the pitch curve: the cable wound on them varies the energy by "
+                     f"{variation:.3g} of what the load exchanges, above the bound tolerance={tolerance:.3g}; "
+                     f"{advice}; or pass a looser tolerance")
+
+
+def export_profile(design: Design, path, spring: int = 0, *, n: int | None = None,
+                   tolerance: float = BALANCE_TOLERANCE, **options) -> Path:
     """Write the non-circular pulley of ``design`` to ``path`` (.svg, .dxf or .csv) at true scale, in mm.
+
+    Before writing, the part is checked as cut: the cable is wound on the *polyline* to be
+    written, as rounded in the file (tangent vertex from the eyelet, chords to the clamp;
+    :mod:`.profile_check`, not the profile's series), and the energy of the design with that cable must vary by at most
+    ``tolerance`` of what the rest of the design exchanges over the profile's range.
 
     Parameters
     ----------
@@ -248,12 +287,26 @@ def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
         or ``.csv`` (the pitch curve, one point a row, with the link angle it serves).
     spring : int
         Index of the spring wound on the profile.
+    n : int, optional
+        Points on the pitch curve, >= 10; too few for ``tolerance`` is a ValueError that names
+        ``n`` and about how many would do. By default as many as the bound needs, from 2,000 up
+        (the error falls as ``1/n^2``; at most 200,000).
+    tolerance : float
+        The bound, ``0 < tolerance < 1``: by default the balance bound of
+        :meth:`balancelab.Design.balance_report` (1e-9), which takes some tens of thousands of
+        points. A part cut to 0.01 mm cannot hold that (the cut shifts the cable's path by about
+        as much); pass the variation you can accept, e.g. ``1e-6``, for fewer points.
     **options
-        Passed to :func:`profile_part` (``n``, ``axle_diameter``, ``cable_diameter``, ``flange``, ``boss``).
+        Passed to :func:`profile_part` (``axle_diameter``, ``cable_diameter``, ``flange``, ``boss``).
 
     Returns
     -------
     pathlib.Path
+
+    Raises
+    ------
+    ValueError
+        When the polyline does not keep the bound (naming ``n``), or as :func:`profile_part`.
 
     Examples
     --------
@@ -263,9 +316,9 @@ def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
     >>> d = bl.realize.noncircular_pulley(lever, spring_model=ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0),
     ...                                   angle_range=(-math.pi / 3, math.pi / 3), min_tension=45.0)
     >>> with tempfile.TemporaryDirectory() as tmp:
-    ...     out = export_profile(d, pathlib.Path(tmp) / "pulley.csv", n=100)
+    ...     out = export_profile(d, pathlib.Path(tmp) / "pulley.csv", n=1000, tolerance=1e-6)
     ...     len(out.read_text().splitlines())
-    102
+    1002
     """
     if not isinstance(path, (str, os.PathLike)):
         raise TypeError(f"path must be a file name (str or pathlib.Path), got {type(path).__name__}")
@@ -273,6 +326,10 @@ def export_profile(design: Design, path, spring: int = 0, **options) -> Path:
     writers = {".svg": _svg, ".dxf": _dxf, ".csv": _csv}
     if path.suffix.lower() not in writers:
         raise ValueError(f"path must end in .svg, .dxf or .csv, got {path.name!r}")
-    part = profile_part(design, spring, **options)
+    tolerance = finite_real("tolerance (relative energy variation)", tolerance, positive=True)
+    if tolerance >= 1:
+        raise ValueError(f"tolerance (relative energy variation) must be in (0, 1), got {tolerance}")
+    _profile_of(design, spring)
+    part, _ = _verified_part(design, spring, n, tolerance, options)
     writers[path.suffix.lower()](part, path)
     return path
