@@ -30,7 +30,7 @@ PAGE = BOOK / "problem_bank.md"
 KINDS = ("Compute", "Derive", "Design", "Judgement")
 LEVELS = {1: "1 (one relation)", 2: "2 (several steps)", 3: "3 (proof or open design)"}
 TAG = re.compile(r"^\*(" + "|".join(KINDS) + r"), level ([123]) of 3\.\*$")
-EXERCISE = re.compile(r"^```\{exercise\} (?P<title>.+)\n:label: (?P<label>[\w-]+)\n(?P<body>.*?)^```$",
+EXERCISE = re.compile(r"^```\{exercise\} (?P<title>[^\n]+)\n:label: (?P<label>[\w-]+)\n(?P<body>.*?)^```$",
                       re.M | re.S)
 
 
@@ -95,7 +95,7 @@ def render(exercises: list[Exercise]) -> str:
         "|---|---|---|---|",
     ]
     for e in exercises:
-        lines.append(f"| {e.number} | {{ref}}`{e.title} <{e.label}>` | {e.kind} | {e.level} |")
+        lines.append(f"| {{doc}}`{e.number} <{e.chapter}>` | {{ref}}`{e.title} <{e.label}>` | {e.kind} | {e.level} |")
     lines += [
         "",
         "For an exam, take one exercise of each kind from the chapters covered and change its",
