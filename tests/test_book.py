@@ -32,7 +32,8 @@ pytestmark = pytest.mark.slow
 
 CHAPTERS = ["intro", "notation", "ch1_counterweights", "ch2_zfl_springs", "ch3_building_zfl",
             "ch4_serial", "ch5_fourbar", "ch6_scissors_peaucellier", "ch7_your_own_linkage",
-            "ch8_ideal_to_real", "ch9_noncircular", "labs", "notes_on_sources", "references", "accessibility"]
+            "ch8_ideal_to_real", "ch9_noncircular", "labs", "schedule", "problem_bank", "notes_on_sources", "references",
+            "accessibility"]
 NOTEBOOKS = [c for c in CHAPTERS if c.startswith("ch")] + ["labs"]
 REMOTE = re.compile(r"""<(?:script|img|iframe|link)\b[^>]*?\b(?:src|href)\s*=\s*["'](?:https?:)?//[^"']*""",
                     re.IGNORECASE)
@@ -265,6 +266,105 @@ def test_chapters_have_exercises_with_executed_solutions(site):
         assert "Learning objectives" in html
         assert len(re.findall(r'<div class="animation(?: [\w-]+)*">', html)) >= 1, ch   # the player adds bl-player
         assert re.search(r'<figure[^>]*id="fig-', html), f"{ch}: no numbered figure"
+
+
+# --------------------------------------------------------------------------- exercises (from the sources)
+
+
+def _problem_bank():
+    """scripts/problem_bank.py as a module (the generator of book/problem_bank.md)."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("problem_bank", ROOT / "scripts" / "problem_bank.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["problem_bank"] = module          # dataclasses look their module up while the class is made
+    spec.loader.exec_module(module)
+    return module
+
+
+def _solution(text: str, label: str) -> str:
+    """The source between ``solution-start label`` and the next ``solution-end``."""
+    m = re.search(r"^```\{solution-start\} " + re.escape(label) + r"\n(.*?)^```\{solution-end\}", text, re.M | re.S)
+    assert m, f"{label}: no solution"
+    return m[1]
+
+
+CODE_CELL = re.compile(r"^```\{code-cell\} ipython3\n(.*?)^```$", re.M | re.S)
+
+
+def test_every_chapter_ends_with_four_exercises_of_mixed_kinds_and_levels():
+    bank = _problem_bank()
+    chapters = bank.chapters()
+    assert [p.stem for p in chapters] == [c for c in CHAPTERS if re.match(r"ch\d_", c)]
+    for path in chapters:
+        text = path.read_text()
+        headings = re.findall(r"^## (.+)$", text, re.M)
+        assert headings[-1] == "Exercises", f"{path.name}: the last section is {headings[-1]!r}, not Exercises"
+        tail = text[text.rindex("\n## Exercises\n"):]
+        exercises = bank.exercises_of(path)
+        at_end = [e for e in exercises if f":label: {e.label}\n" in tail]
+        assert len(at_end) >= 4, f"{path.name}: {len(at_end)} exercises under its Exercises heading"
+        untagged = [e.label for e in exercises if not e.kind]
+        assert not untagged, f"{path.name}: exercises without a '*Kind, level n of 3.*' line: {untagged}"
+        assert len({e.kind for e in exercises}) >= 2, f"{path.name}: every exercise of one kind"
+        assert len({e.level for e in exercises}) >= 2, f"{path.name}: every exercise of one level"
+        assert all(e.label.startswith(f"ex-ch{e.number}-") for e in exercises), path.name
+    everything = bank.all_exercises()
+    assert {e.kind for e in everything} == set(bank.KINDS)
+    assert len({e.label for e in everything}) == len(everything), "two exercises share a label"
+
+
+def test_every_solution_argues_in_prose_and_checks_its_code_in_a_hidden_cell():
+    bank = _problem_bank()
+    for path in bank.chapters():
+        text = path.read_text()
+        for e in bank.exercises_of(path):
+            solution = _solution(text, e.label)
+            prose = CODE_CELL.sub("", solution).replace(":class: dropdown", "")
+            words = re.findall(r"[A-Za-z]{2,}", re.sub(r"\$[^$]*\$", " ", prose))
+            assert len(words) >= 15, f"{e.label}: the solution's reasoning is not written out ({len(words)} words)"
+            cells = CODE_CELL.findall(solution)
+            if cells:
+                hidden = [c for c in cells if re.search(r"^:tags: \[remove-cell\]", c, re.M)]
+                assert any(re.search(r"^assert ", c, re.M) for c in hidden), \
+                    f"{e.label}: its code has no hidden cell that asserts the stated answer"
+
+
+def test_problem_bank_page_is_current_and_lists_every_exercise():
+    bank = _problem_bank()
+    exercises = bank.all_exercises()
+    page = (ROOT / "book" / "problem_bank.md").read_text()
+    assert page == bank.render(exercises), "book/problem_bank.md is stale: run python scripts/problem_bank.py"
+    rows = re.findall(r"^\| \{doc\}`(\d) <(\w+)>` \| \{ref\}`[^`]* <([\w-]+)>` \| (\w+) \| ([123]) \|$", page, re.M)
+    assert [(int(n), ch, label, kind, int(level)) for n, ch, label, kind, level in rows] == \
+        [(e.number, e.chapter, e.label, e.kind, e.level) for e in exercises]
+    assert bank.main(["--check"]) == 0
+
+
+def test_problem_bank_refuses_an_exercise_without_kind(tmp_path, monkeypatch):
+    bank = _problem_bank()
+    (tmp_path / "ch1_demo.md").write_text(
+        "## Exercises\n\n```{exercise} Untagged\n:label: ex-ch1-demo\n\nCompute something.\n```\n\n"
+        "```{exercise} Tagged\n:label: ex-ch1-other\n\n*Design, level 3 of 3.*\n\nDesign something.\n```\n")
+    found = bank.all_exercises(tmp_path)
+    assert [(e.label, e.kind, e.level) for e in found] == [("ex-ch1-demo", "", 0), ("ex-ch1-other", "Design", 3)]
+    monkeypatch.setattr(bank, "BOOK", tmp_path)
+    monkeypatch.setattr(bank, "all_exercises", lambda book=tmp_path: found)
+    assert bank.main(["--check"]) == 1
+
+
+def test_schedule_has_twelve_weeks_every_chapter_and_lab_and_only_real_exercises():
+    page = (ROOT / "book" / "schedule.md").read_text()
+    weeks = [int(w) for w in re.findall(r"^\*\*Week (\d+)\.", page, re.M)]
+    assert weeks == list(range(1, 13))
+    for ch in (c for c in CHAPTERS if re.match(r"ch\d_", c)):
+        assert f"{{doc}}`{ch}`" in page, f"the schedule never assigns {ch}"
+    assert [int(n) for n in re.findall(r"Lab (\d) \(", page)] == list(range(1, 9))
+    labels = {e.label for e in _problem_bank().all_exercises()}
+    cited = re.findall(r"\{ref\}`(ex-[\w-]+)`", page)
+    assert cited and set(cited) <= labels, sorted(set(cited) - labels)
+    assert len(re.findall(r"^\*Outcome:\*", page, re.M)) == 12
+    assert "labs/bench/" in page and (ROOT / "labs" / "bench" / "README.md").is_file()
 
 
 def test_a_cell_that_raises_fails_the_build(tmp_path):
