@@ -811,3 +811,64 @@ def test_cgroup_cleanup_reaches_child_cgroups():
         finally:
             proc.kill()
             proc.wait()
+
+
+#: Issue 18, item 3: who the kernel is on the host. The cell reports its uid and the host uid its
+#: user namespace maps it to, tries to read root-only files (mode 600) the grader put in bound folders
+#: (the Python's prefix, the package folder) and to append to those and to world-readable ones.
+WHO = """import os
+inside = os.getuid()
+outside = next(int(line.split()[1]) for line in open("/proc/self/uid_map") if int(line.split()[0]) == inside)
+found = []
+for path in {paths!r}:
+    try:
+        if path.endswith("_600.txt"):
+            found.append("read " + open(path).read())
+    except OSError:
+        pass
+    try:
+        open(path, "a").write("x")
+        found.append("wrote " + path)
+    except OSError:
+        pass
+print("WHO", inside, outside, found)
+if (inside, outside) != (65534, 65534) or found:
+    raise RuntimeError(f"KERNEL IS {{inside}} (host {{outside}}): {{found}}")"""
+
+
+def test_a_root_grader_runs_the_kernel_as_nobody(tmp_path):
+    """Issue 18, item 3: a grader run by root gives the kernel the host's uid 65534, not root
+    without capabilities: a root-only file in a folder the sandbox binds cannot be read, a
+    root-owned one cannot be written, and the submission is still graded."""
+    from balancelab.course.sandbox import kernel_runs_as_nobody
+
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    if os.geteuid() != 0:
+        pytest.skip("the grader is not root here: the kernel is the grader's own unprivileged user")
+    assert kernel_runs_as_nobody(), "as root the kernel must run as uid 65534 (setpriv and user namespaces work here)"
+    import balancelab
+
+    planted = []
+    for folder in (Path(sys.prefix), Path(balancelab.__file__).resolve().parent):
+        for mode in (0o600, 0o644):
+            p = folder / f"h18_root_{uuid.uuid4().hex[:6]}_{mode:o}.txt"
+            p.write_text(SECRET)
+            p.chmod(mode)
+            planted.append(p)
+    sub, out = tmp_path / "sub", tmp_path / "grades.csv"
+    sub.mkdir()
+    who = WHO.format(paths=[str(p) for p in planted])
+    nbformat.write(submission_notebook("lab2", who, K_LAMP("who")), sub / "who_lab2.ipynb")
+    try:
+        proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out)],
+                              capture_output=True, text=True, timeout=600, cwd=tmp_path)
+        after = {p: p.read_text() for p in planted}
+    finally:
+        for p in planted:
+            p.unlink()
+    row = next(csv.DictReader(out.open(encoding="utf-8")))
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert row["status"] == "graded" and row["2.1"] == "1", row
+    assert "RuntimeError" not in row["notes"], row["notes"]
+    assert all(text == SECRET for text in after.values())
