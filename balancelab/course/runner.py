@@ -38,7 +38,7 @@ from pathlib import Path
 from .caps import Caps, Cgroup
 from .check.data import encode_answer
 from .gradetable import excerpt
-from .sandbox import NOBODY, SHARE, WORK, kernel_runs_as_nobody, limited, sandbox_command
+from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
 
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
 
@@ -495,6 +495,8 @@ def _grade(job: dict, emit) -> None:
     from . import check as _check  # the grader's own checks
 
     caps = Caps(**job.get("caps", {}))
+    if "as_nobody" in job:  # the grader probed the sandbox once for all its runners
+        assume_kernel_user(bool(job["as_nobody"]))
     variables = [t.variable for t in _check.tasks(job["lab"])] + ["STUDENT_ID"]
     start = time.monotonic()
     try:

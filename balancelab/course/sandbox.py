@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited", "kernel_runs_as_nobody", "NOBODY",
+           "assume_kernel_user",
            "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK", "SHARE"]
 
 NO_SANDBOX_WARNING = ("no sandbox: bubblewrap (bwrap) is missing, does not work here or was turned off, so "
@@ -232,10 +233,34 @@ def kernel_runs_as_nobody() -> bool:
     >>> kernel_runs_as_nobody() in (True, False)
     True
     """
-    return os.geteuid() == 0 and _two_step_works(tuple(kernel_binds()))
+    if os.geteuid() != 0:
+        return False
+    binds = tuple(kernel_binds())
+    if binds not in _TWO_STEP:
+        _TWO_STEP[binds] = _two_step_works(binds)
+    return _TWO_STEP[binds]
 
 
-@functools.lru_cache(maxsize=8)
+#: Whether the two-step sandbox works, per set of binds (probed once; a grader passes its answer to
+#: the runners it forks with :func:`assume_kernel_user`, so that no runner pays for the probe).
+_TWO_STEP: dict[tuple, bool] = {}
+
+
+def assume_kernel_user(as_nobody: bool) -> None:
+    """Take the grader's answer of :func:`kernel_runs_as_nobody` for this process's binds (no probe).
+
+    Parameters
+    ----------
+    as_nobody : bool
+        What :func:`kernel_runs_as_nobody` said in the grader.
+
+    Examples
+    --------
+    >>> assume_kernel_user(kernel_runs_as_nobody())
+    """
+    _TWO_STEP[tuple(kernel_binds())] = bool(as_nobody)
+
+
 def _two_step_works(binds: tuple) -> bool:
     if bwrap_path() is None or shutil.which("setpriv") is None:
         return False

@@ -77,11 +77,15 @@ def _lamp_numbers(rng) -> dict:
 
 
 @register_task("1.1", "distance of the counterweight from the pivot", "r_c", "numeric",
-               "a number in metres (or a string like '22 cm'); accepted within 0.5 %", numbers=_lamp_numbers)
+               "a number in metres (or a string like '22 cm'); accepted within 0.5 %", numbers=_lamp_numbers,
+               distinct=(lambda lamp: _r_c(lamp), 0.015))
 def _t11(answer, lamp):
-    d = single_link_counterweight(mass=lamp["mass"], length=lamp["length"], counter_mass=lamp["counter_mass"],
-                                  link_mass=lamp["link_mass"])
-    return numeric(answer, d.parameters["r_c"], "length")
+    return numeric(answer, _r_c(lamp), "length")
+
+
+def _r_c(lamp: dict) -> float:
+    return single_link_counterweight(mass=lamp["mass"], length=lamp["length"], counter_mass=lamp["counter_mass"],
+                                     link_mass=lamp["link_mass"]).parameters["r_c"]
 
 
 @register_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",

@@ -57,7 +57,7 @@ def _pulley_numbers(rng) -> dict:
     if rng is None:
         return {k: p[k] for k in ("mass", "length", "b", "c")}
     return dict(mass=round(rng.uniform(1.5, 2.5), 1), length=round(rng.uniform(0.4, 0.6), 2),
-                b=round(rng.uniform(0.28, 0.35), 2), c=round(rng.uniform(0.15, 0.22), 2))
+                b=round(rng.uniform(0.28, 0.40), 2), c=round(rng.uniform(0.12, 0.22), 2))
 
 
 @functools.lru_cache(maxsize=64)
@@ -79,7 +79,8 @@ def _pulley_radius_limit(mass: float, length: float, b: float, c: float) -> floa
 
 
 @register_task("3.1", "largest pulley radius for a 1 % torque error", "pulley_radius", "numeric",
-               "a number in metres (or a string like '2.8 mm'); accepted within 2 %", numbers=_pulley_numbers)
+               "a number in metres (or a string like '2.8 mm'); accepted within 2 %", numbers=_pulley_numbers,
+               distinct=(lambda lever: _pulley_radius_limit(**lever), 0.06))
 def _t31(answer, lever):
     return numeric(answer, _pulley_radius_limit(lever["mass"], lever["length"], lever["b"], lever["c"]),
                    "length", rtol=0.02)

@@ -118,7 +118,8 @@ def _t71(answer):
 
 
 @register_task("7.2", "least total stiffness of lab 7's 3R arm with those candidates", "k_total_min",
-               "numeric", "a number in N/m (or with a unit); accepted within 0.5 %", numbers=_arm_personal)
+               "numeric", "a number in N/m (or with a unit); accepted within 0.5 %", numbers=_arm_personal,
+               distinct=(lambda arm: _least_stiffness(_key(arm)), 0.015))
 def _t72(answer, arm):
     return numeric(answer, _least_stiffness(_key(arm)), "stiffness")
 
