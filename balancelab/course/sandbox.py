@@ -11,9 +11,10 @@ environment variable of the grader; one host folder may be shared (the kernel's 
 When the command ends or is killed every process it started dies with its PID namespace
 (a detached child included). It may not make user namespaces of its own (``--disable-userns``):
 without one it cannot mount anything (a cgroup file system to raise its own caps included).
-Note: bubblewrap run by root maps ``nobody`` to the host's root user; the kernel then has no
-capability and sees no host file it could write, but a grader run by an unprivileged account is
-safer still (the Python and the package must then be readable by that account).
+Run by root, bubblewrap alone would map ``nobody`` to the host's root user (without capabilities);
+so a root grader uses two steps (:func:`kernel_runs_as_nobody`): the kernel is then the host's uid
+65534. Where that cannot work (no ``setpriv``, no unprivileged user namespaces, a Python only root
+may read) the one-step sandbox stays, its kernel root without any capability.
 
 Without bubblewrap the command runs in a process group of its own with resource limits
 (CPU time, file size, address space), and :func:`run_limited` warns once that submissions
