@@ -935,3 +935,30 @@ def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
         assert rows[f"{friend}_{lab}"][task] == "0", rows[f"{friend}_{lab}"]
         assert rows[f"dan_{lab}"][task] == "0", rows[f"dan_{lab}"]
     assert "declares STUDENT_ID" in rows[f"{friend}_lab3"]["notes"]
+
+
+def test_duplicate_ids_across_shards_are_flagged_at_merge(tmp_path):
+    """Issue 18, item 5: one id graded on two shards (alice's own file on one, a copy in mallory's
+    folder on another; two roster files naming one student) is flagged in both rows of the merged
+    table; other labs of that id, and other students, are not."""
+    from balancelab.course.gradetable import GradeRow, read_csv, write_csv
+
+    def row(student, lab="lab2"):
+        task = "1.1" if lab == "lab1" else "2.1"
+        return GradeRow(student, lab, "graded", {task: 1.0}, {task: 1.0})
+
+    one = write_csv([row("alice_lab2"), row("bob_lab2"), row("alice_lab1", "lab1"), row("a")], tmp_path / "p1.csv")
+    two = write_csv([row("mallory/alice_lab2"), row("carol_lab2"), row("b")], tmp_path / "p2.csv")
+    out = tmp_path / "all.csv"
+    roster = tmp_path / "roster.csv"
+    roster.write_text("file,student_id\na.ipynb,s77\nb.ipynb,s77\nalice_lab2.ipynb,alice\n"
+                      "mallory/alice_lab2.ipynb,alice\nbob_lab2.ipynb,bob\ncarol_lab2.ipynb,carol\n"
+                      "alice_lab1.ipynb,alice\n", encoding="utf-8")
+    for extra, flagged in (([], {"alice_lab2", "mallory/alice_lab2"}),
+                           (["--roster", str(roster)], {"alice_lab2", "mallory/alice_lab2", "a", "b"})):
+        proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", "merge", str(one), str(two),
+                               "--out", str(out), *extra], capture_output=True, text=True, timeout=120)
+        assert proc.returncode == 0, proc.stderr
+        notes = {r.student: r.notes for r in read_csv(out)}
+        assert {s for s, n in notes.items() if n.startswith("DUPLICATE ID")} == flagged, notes
+        assert "mallory/alice_lab2" in notes["alice_lab2"] and "alice_lab2" in notes["mallory/alice_lab2"]

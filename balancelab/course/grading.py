@@ -471,7 +471,7 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     if args.folder[:1] == ["merge"]:
         try:
-            merge_csv(args.folder[1:], args.out)
+            merge_csv(args.folder[1:], args.out, read_roster(args.roster) if args.roster else None)
         except (OSError, ValueError, KeyError) as e:
             print(f"error: {e}", file=sys.stderr)
             return 2
