@@ -897,8 +897,17 @@ def _stiffness_code(sid: str) -> str:
             "objective='min_stiffness').springs)")
 
 
+def _counterweights_code(sid: str) -> str:
+    """Code of a right design for task 1.4 for ``sid``'s link masses (each link as a lever on its pivot)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_m1, _m3, _m4 = _tn('1.4', {sid!r})['masses']\n"
+            "_mc = bl.lecture.equivalent_masses(crank=0.2, coupler=0.5, rocker=0.4, mass=_m3, com=(0.2, 0.0))['c'].real * _m3\n"
+            "counterweights = {'crank': (3.0, (-(_m1 * 0.1 + (_m3 - _mc) * 0.2) / 3.0, 0.0)),\n"
+            "                  'rocker': (3.0, (-(_m4 * 0.2 + _mc * 0.4) / 3.0, 0.0))}")
+
+
 def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
-    """Issue 18, item 6: tasks 3.1, 7.2 and the design task 2.4 use personal numbers. Alice's own
+    """Issue 18, item 6: tasks 3.1, 7.2 and the design tasks 2.4 and 1.4 use personal numbers. Alice's own
     answers score; the same answers in bob's file (even declaring alice's id) and the answers for the
     published numbers in dan's file score 0, graded end to end with the id of the file name."""
     from balancelab.course.check import task_numbers
@@ -908,8 +917,9 @@ def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
     from balancelab.course.check import lab3, lab7
 
     answer = {"3.1": lambda n: lab3._pulley_radius_limit(**n), "7.2": lambda n: lab7._least_stiffness(lab7._key(n)),
-              "2.4": lambda n: n["weight"] * n["length"]}  # a design balances the load with this moment
-    tol = {"3.1": 0.02, "7.2": 0.005, "2.4": 0.001}
+              "2.4": lambda n: n["weight"] * n["length"],  # a design balances the load with this moment
+              "1.4": lambda n: n["masses"][0] + 10 * n["masses"][1] + 100 * n["masses"][2]}  # any mass differs
+    tol = {"3.1": 0.02, "7.2": 0.005, "2.4": 0.001, "1.4": 0.0001}
     mine = {t: answer[t](task_numbers(t, "alice")) for t in answer}
     for t in answer:  # the published answer is far from every student's (numbers are drawn so)
         assert abs(answer[t](task_numbers(t, "")) / mine[t] - 1) > 2 * tol[t]
@@ -922,7 +932,9 @@ def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
     books = {"alice_lab3": [_pulley_code("alice")], f"{friend}_lab3": ["STUDENT_ID = 'alice'\n" + _pulley_code("alice")],
              "dan_lab3": [_pulley_code("")], "alice_lab7": [_stiffness_code("alice")],
              f"{friend}_lab7": [_stiffness_code("alice")], "dan_lab7": [_stiffness_code("")],
-             "alice_lab2": [LEVER], f"{friend}_lab2": [LEVER], "dan_lab2": [personal_lever_spring("")]}
+             "alice_lab2": [LEVER], f"{friend}_lab2": [LEVER], "dan_lab2": [personal_lever_spring("")],
+             "alice_lab1": [_counterweights_code("alice")], f"{friend}_lab1": [_counterweights_code("alice")],
+             "dan_lab1": [_counterweights_code("")]}
     for name, cells in books.items():
         lab = name.split("_")[1]
         nbformat.write(submission_notebook(lab, *cells, *(lab3_rest if lab == "lab3" else [])), sub / f"{name}.ipynb")
@@ -930,7 +942,7 @@ def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
                            "--jobs", "2"], capture_output=True, text=True, timeout=900, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr[-2000:]
     rows = {r["student"]: r for r in csv.DictReader(out.open(encoding="utf-8"))}
-    for lab, task, points in (("lab3", "3.1", "1"), ("lab7", "7.2", "1"), ("lab2", "2.4", "2")):
+    for lab, task, points in (("lab3", "3.1", "1"), ("lab7", "7.2", "1"), ("lab2", "2.4", "2"), ("lab1", "1.4", "2")):
         assert rows[f"alice_{lab}"][task] == points, rows[f"alice_{lab}"]
         assert rows[f"{friend}_{lab}"][task] == "0", rows[f"{friend}_{lab}"]
         assert rows[f"dan_{lab}"][task] == "0", rows[f"dan_{lab}"]
