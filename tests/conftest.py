@@ -152,6 +152,15 @@ def personal_k_lamp(student_id: str) -> str:
             f"k_lamp = bl.lecture.single_link_spring(**_tn('2.1', {student_id!r})).parameters['k']")
 
 
+def personal_lever_spring(student_id: str) -> str:
+    """Code of a right design for task 2.4 (the student's own load), tilted anchor of the generalized lever."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_w = _tn('2.4', {student_id!r})\n"
+            "_p = bl.singh.generalized_lever(weight=_w['weight'], length=_w['length'], a_x=0.3, b_x=-0.05, "
+            "b_y=0.25).parameters\n"
+            "lever_spring = {'k': _p['k'], 'a': (_p['a_x'], _p['a_y']), 'b': (_p['b_x'], _p['b_y'])}")
+
+
 def personal_r_c(student_id: str) -> str:
     """Code of a right answer to task 1.1 for ``student_id``."""
     return ("from balancelab.course.check import task_numbers as _tn\n"

@@ -59,15 +59,15 @@ def _lever_conditions():
     return sol[ay_r], sol[k]
 
 
-def _pulley_radius():
+def _pulley_radius(mass=2.0, length=0.5, b=0.3, c=0.2):
     """Bisection on the exact pulley model (a route independent of the check's root finder)."""
     from balancelab.methods.realize import pulley_balance_error, pulley_lever
 
     lo, hi = 1e-5, 0.05
     for _ in range(40):
         mid = (lo + hi) / 2
-        lever = pulley_lever(mass=2.0, length=0.5, b=0.3, c=0.2, radius=mid)
-        err = pulley_balance_error(lever).residual_torque / (2.0 * bl.G * 0.5)
+        lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=mid)
+        err = pulley_balance_error(lever).residual_torque / (mass * bl.G * length)
         lo, hi = (mid, hi) if err < 0.01 else (lo, mid)
     return (lo + hi) / 2
 
@@ -100,8 +100,8 @@ def _lab7_free_choices():
     return count.nvar - count.rank
 
 
-def _lab7_least_stiffness():
-    arm = lab7.lab7_arm()
+def _lab7_least_stiffness(numbers=None):
+    arm = lab7.lab7_arm(numbers)
     softest = bl.balance(arm, springs=lab7.lab7_candidates(arm), objective="min_stiffness")
     assert softest.balance_report().balanced
     return sum(s.k for s in softest.springs)
@@ -485,6 +485,34 @@ def test_personal_numbers_are_seeded_by_the_student_and_judged_with_them():
     lamp = task_numbers("1.1", "s001")
     r_c = (lamp["mass"] * lamp["length"] + lamp["link_mass"] * lamp["length"] / 2) / lamp["counter_mass"]
     assert core.check_data("1.1", {"num": repr(r_c)}, "s001").correct
+
+
+@pytest.mark.parametrize("task, right", [("3.1", lambda n: _pulley_radius(**n)),
+                                         ("7.2", lambda n: _lab7_least_stiffness(n))])
+def test_personal_numbers_of_pulley_and_arm_tasks(task, right):
+    """Issue 18, item 6: tasks 3.1 and 7.2 are judged with the student's own numbers; the published
+    answer and a friend's are wrong for a student whose right answer differs from them."""
+    from balancelab.course.check import set_student, task_numbers
+
+    tol = {"3.1": 0.02, "7.2": 0.005}[task]
+    published = right(task_numbers(task, ""))
+    ids = [f"s{i:03d}" for i in range(8)]
+    mine = {sid: right(task_numbers(task, sid)) for sid in ids}
+    assert all(task_numbers(task, sid) == task_numbers(task, sid) for sid in ids[:2])
+    for sid, value in mine.items():
+        assert core.check_data(task, {"num": repr(value)}, sid).correct
+        if abs(published / value - 1) > 2 * tol:
+            assert not core.check_data(task, {"num": repr(published)}, sid).correct
+    differs = [sid for sid in ids if abs(published / mine[sid] - 1) > 2 * tol]
+    assert len(differs) >= 5, "personal numbers should move the answer away from the published one"
+    alice, bob = next((a, b) for a in differs for b in differs if abs(mine[a] / mine[b] - 1) > 2 * tol)
+    assert not core.check_data(task, {"num": repr(mine[alice])}, bob).correct  # a friend's answer
+    try:  # the notebook's check judges with the id set there
+        set_student(alice)
+        assert check(task, mine[alice]).correct and not check(task, published).correct
+    finally:
+        set_student("")
+    assert check(task, published).correct
 
 
 def _formats(v):

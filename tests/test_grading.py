@@ -10,7 +10,7 @@ import pytest
 
 from balancelab.course.check import tasks
 from balancelab.course.grading import GradeRow, grade_namespace, summary, write_csv
-from conftest import personal_k_lamp, personal_r_c, submission_notebook
+from conftest import personal_k_lamp, personal_lever_spring, personal_r_c, submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -24,7 +24,7 @@ def _write(folder, name, nb):
 
 
 K_LAMP = personal_k_lamp  # the student's own numbers: the id is the file name's (alice_lab2 -> alice)
-LEVER_SPRING = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
+LEVER_SPRING = personal_lever_spring("alice")  # task 2.4: a design for alice's own load
 ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
 
 

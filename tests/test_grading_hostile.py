@@ -30,13 +30,13 @@ import pytest
 from balancelab.course.check import tasks
 from balancelab.course.grading import grade_answers, resolve_lab, shard
 from balancelab.course.sandbox import sandbox_available
-from conftest import personal_k_lamp, personal_r_c, submission_notebook
+from conftest import personal_k_lamp, personal_lever_spring, personal_r_c, submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 MARK = f"h3-hostile-{uuid.uuid4().hex[:12]}"
 SECRET = f"H18SECRET{uuid.uuid4().hex[:8]}"
 K_LAMP = personal_k_lamp  # a right answer to 2.1 for the student the file name names
-LEVER = "lever_spring = {'k': 300.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"
+LEVER = personal_lever_spring("alice")  # task 2.4: a design for alice's own load
 ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
 LAB2_MAX = str(int(sum(t.points for t in tasks(2))))
 PERSONAL = """from balancelab.course.check import set_student, task_numbers
@@ -811,3 +811,166 @@ def test_cgroup_cleanup_reaches_child_cgroups():
         finally:
             proc.kill()
             proc.wait()
+
+
+#: Issue 18, item 3: who the kernel is on the host. The cell reports its uid and the host uid its
+#: user namespace maps it to, tries to read root-only files (mode 600) the grader put in bound folders
+#: (the Python's prefix, the package folder) and to append to those and to world-readable ones.
+WHO = """import os
+inside = os.getuid()
+outside = next(int(line.split()[1]) for line in open("/proc/self/uid_map") if int(line.split()[0]) == inside)
+found = []
+for path in {paths!r}:
+    try:
+        if path.endswith("_600.txt"):
+            found.append("read " + open(path).read())
+    except OSError:
+        pass
+    try:
+        open(path, "a").write("x")
+        found.append("wrote " + path)
+    except OSError:
+        pass
+print("WHO", inside, outside, found)
+if (inside, outside) != (65534, 65534) or found:
+    raise RuntimeError(f"KERNEL IS {{inside}} (host {{outside}}): {{found}}")"""
+
+
+def test_a_root_grader_runs_the_kernel_as_nobody(tmp_path):
+    """Issue 18, item 3: a grader run by root gives the kernel the host's uid 65534, not root
+    without capabilities: a root-only file in a folder the sandbox binds cannot be read, a
+    root-owned one cannot be written, and the submission is still graded."""
+    from balancelab.course.sandbox import kernel_runs_as_nobody
+
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    if os.geteuid() != 0:
+        pytest.skip("the grader is not root here: the kernel is the grader's own unprivileged user")
+    assert kernel_runs_as_nobody(), "as root the kernel must run as uid 65534 (setpriv and user namespaces work here)"
+    import balancelab
+
+    planted = []
+    for folder in (Path(sys.prefix), Path(balancelab.__file__).resolve().parent):
+        for mode in (0o600, 0o644):
+            p = folder / f"h18_root_{uuid.uuid4().hex[:6]}_{mode:o}.txt"
+            p.write_text(SECRET)
+            p.chmod(mode)
+            planted.append(p)
+    sub, out = tmp_path / "sub", tmp_path / "grades.csv"
+    sub.mkdir()
+    who = WHO.format(paths=[str(p) for p in planted])
+    nbformat.write(submission_notebook("lab2", who, K_LAMP("who")), sub / "who_lab2.ipynb")
+    try:
+        proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out)],
+                              capture_output=True, text=True, timeout=600, cwd=tmp_path)
+        after = {p: p.read_text() for p in planted}
+    finally:
+        for p in planted:
+            p.unlink()
+    row = next(csv.DictReader(out.open(encoding="utf-8")))
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert row["status"] == "graded" and row["2.1"] == "1", row
+    assert "RuntimeError" not in row["notes"], row["notes"]
+    assert all(text == SECRET for text in after.values())
+
+
+def _pulley_code(sid: str) -> str:
+    """Code of task 3.1's answer for ``sid``'s lever (bisection on the exact string model)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            "from balancelab.methods.realize import pulley_balance_error, pulley_lever\n"
+            f"_n = _tn('3.1', {sid!r})\n"
+            "_lo, _hi = 1e-5, 0.05\n"
+            "for _ in range(40):\n"
+            "    _mid = (_lo + _hi) / 2\n"
+            "    _e = pulley_balance_error(pulley_lever(radius=_mid, **_n)).residual_torque / "
+            "(_n['mass'] * bl.G * _n['length'])\n"
+            "    _lo, _hi = (_mid, _hi) if _e < 0.01 else (_lo, _mid)\n"
+            "pulley_radius = (_lo + _hi) / 2")
+
+
+def _stiffness_code(sid: str) -> str:
+    """Code of task 7.2's answer for ``sid``'s arm."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            "from balancelab.course.check.lab7 import lab7_arm, lab7_candidates\n"
+            f"_arm = lab7_arm(_tn('7.2', {sid!r}))\n"
+            "k_total_min = sum(s.k for s in bl.balance(_arm, springs=lab7_candidates(_arm), "
+            "objective='min_stiffness').springs)")
+
+
+def _counterweights_code(sid: str) -> str:
+    """Code of a right design for task 1.4 for ``sid``'s link masses (each link as a lever on its pivot)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_m1, _m3, _m4 = _tn('1.4', {sid!r})['masses']\n"
+            "_mc = bl.lecture.equivalent_masses(crank=0.2, coupler=0.5, rocker=0.4, mass=_m3, com=(0.2, 0.0))['c'].real * _m3\n"
+            "counterweights = {'crank': (3.0, (-(_m1 * 0.1 + (_m3 - _mc) * 0.2) / 3.0, 0.0)),\n"
+            "                  'rocker': (3.0, (-(_m4 * 0.2 + _mc * 0.4) / 3.0, 0.0))}")
+
+
+def test_a_friends_or_the_published_answer_scores_nothing(tmp_path):
+    """Issue 18, item 6: tasks 3.1, 7.2 and the design tasks 2.4 and 1.4 use personal numbers. Alice's own
+    answers score; the same answers in bob's file (even declaring alice's id) and the answers for the
+    published numbers in dan's file score 0, graded end to end with the id of the file name."""
+    from balancelab.course.check import task_numbers
+
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    from balancelab.course.check import lab3, lab7
+
+    answer = {"3.1": lambda n: lab3._pulley_radius_limit(**n), "7.2": lambda n: lab7._least_stiffness(lab7._key(n)),
+              "2.4": lambda n: n["weight"] * n["length"],  # a design balances the load with this moment
+              "1.4": lambda n: n["masses"][0] + 10 * n["masses"][1] + 100 * n["masses"][2]}  # any mass differs
+    tol = {"3.1": 0.02, "7.2": 0.005, "2.4": 0.001, "1.4": 0.0001}
+    mine = {t: answer[t](task_numbers(t, "alice")) for t in answer}
+    for t in answer:  # the published answer is far from every student's (numbers are drawn so)
+        assert abs(answer[t](task_numbers(t, "")) / mine[t] - 1) > 2 * tol[t]
+    # a friend whose right answers differ from alice's (two students may, rarely, share an answer)
+    friend = next(f for f in (f"bob{i}" for i in range(20))
+                  if all(abs(answer[t](task_numbers(t, f)) / mine[t] - 1) > 2 * tol[t] for t in answer))
+    sub, out = tmp_path / "sub", tmp_path / "grades.csv"
+    sub.mkdir()
+    lab3_rest = ["partner_free_length = ...", "ordinary_spring = ..."]
+    books = {"alice_lab3": [_pulley_code("alice")], f"{friend}_lab3": ["STUDENT_ID = 'alice'\n" + _pulley_code("alice")],
+             "dan_lab3": [_pulley_code("")], "alice_lab7": [_stiffness_code("alice")],
+             f"{friend}_lab7": [_stiffness_code("alice")], "dan_lab7": [_stiffness_code("")],
+             "alice_lab2": [LEVER], f"{friend}_lab2": [LEVER], "dan_lab2": [personal_lever_spring("")],
+             "alice_lab1": [_counterweights_code("alice")], f"{friend}_lab1": [_counterweights_code("alice")],
+             "dan_lab1": [_counterweights_code("")]}
+    for name, cells in books.items():
+        lab = name.split("_")[1]
+        nbformat.write(submission_notebook(lab, *cells, *(lab3_rest if lab == "lab3" else [])), sub / f"{name}.ipynb")
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
+                           "--jobs", "2"], capture_output=True, text=True, timeout=900, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    rows = {r["student"]: r for r in csv.DictReader(out.open(encoding="utf-8"))}
+    for lab, task, points in (("lab3", "3.1", "1"), ("lab7", "7.2", "1"), ("lab2", "2.4", "2"), ("lab1", "1.4", "2")):
+        assert rows[f"alice_{lab}"][task] == points, rows[f"alice_{lab}"]
+        assert rows[f"{friend}_{lab}"][task] == "0", rows[f"{friend}_{lab}"]
+        assert rows[f"dan_{lab}"][task] == "0", rows[f"dan_{lab}"]
+    assert "declares STUDENT_ID" in rows[f"{friend}_lab3"]["notes"]
+
+
+def test_duplicate_ids_across_shards_are_flagged_at_merge(tmp_path):
+    """Issue 18, item 5: one id graded on two shards (alice's own file on one, a copy in mallory's
+    folder on another; two roster files naming one student) is flagged in both rows of the merged
+    table; other labs of that id, and other students, are not."""
+    from balancelab.course.gradetable import GradeRow, read_csv, write_csv
+
+    def row(student, lab="lab2"):
+        task = "1.1" if lab == "lab1" else "2.1"
+        return GradeRow(student, lab, "graded", {task: 1.0}, {task: 1.0})
+
+    one = write_csv([row("alice_lab2"), row("bob_lab2"), row("alice_lab1", "lab1"), row("a")], tmp_path / "p1.csv")
+    two = write_csv([row("mallory/alice_lab2"), row("carol_lab2"), row("b")], tmp_path / "p2.csv")
+    out = tmp_path / "all.csv"
+    roster = tmp_path / "roster.csv"
+    roster.write_text("file,student_id\na.ipynb,s77\nb.ipynb,s77\nalice_lab2.ipynb,alice\n"
+                      "mallory/alice_lab2.ipynb,alice\nbob_lab2.ipynb,bob\ncarol_lab2.ipynb,carol\n"
+                      "alice_lab1.ipynb,alice\n", encoding="utf-8")
+    for extra, flagged in (([], {"alice_lab2", "mallory/alice_lab2"}),
+                           (["--roster", str(roster)], {"alice_lab2", "mallory/alice_lab2", "a", "b"})):
+        proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", "merge", str(one), str(two),
+                               "--out", str(out), *extra], capture_output=True, text=True, timeout=120)
+        assert proc.returncode == 0, proc.stderr
+        notes = {r.student: r.notes for r in read_csv(out)}
+        assert {s for s, n in notes.items() if n.startswith("DUPLICATE ID")} == flagged, notes
+        assert "mallory/alice_lab2" in notes["alice_lab2"] and "alice_lab2" in notes["mallory/alice_lab2"]

@@ -275,8 +275,11 @@ def read_csv(path: str | Path) -> list[GradeRow]:
     return rows
 
 
-def merge_csv(paths: list[str | Path], out: str | Path) -> Path:
+def merge_csv(paths: list[str | Path], out: str | Path, roster: dict[str, str] | None = None) -> Path:
     """Merge the CSVs of several shards into one table (rows sorted by student; duplicates refused).
+
+    Two rows of one lab whose student ids are the same but which come from different tables (the
+    same id graded on two shards) both get a ``DUPLICATE ID`` note, as within one run.
 
     Parameters
     ----------
@@ -284,6 +287,9 @@ def merge_csv(paths: list[str | Path], out: str | Path) -> Path:
         The shards' tables.
     out : str or Path
         The merged table.
+    roster : dict, optional
+        The roster the shards were graded with (:func:`~balancelab.course.intake.read_roster`);
+        without one, ids come from the file names (:func:`~balancelab.course.intake.identity`).
 
     Returns
     -------
@@ -302,15 +308,44 @@ def merge_csv(paths: list[str | Path], out: str | Path) -> Path:
     >>> b = write_csv([GradeRow("a", "lab1", "graded", {"1.1": 0.0}, {"1.1": 1.0})], d / "b.csv")
     >>> [r.student for r in read_csv(merge_csv([a, b], d / "all.csv"))]
     ['a', 'b']
+
+    Bob graded on two shards (his own file and one in another folder): both rows say so.
+
+    >>> e = write_csv([GradeRow("bob_lab2", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})], d / "e.csv")
+    >>> f = write_csv([GradeRow("x/bob_lab2", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0})], d / "f.csv")
+    >>> [r.notes[:12] for r in read_csv(merge_csv([e, f], d / "all.csv"))]
+    ['DUPLICATE ID', 'DUPLICATE ID']
     """
-    rows, seen = [], set()
-    for p in paths:
+    rows, seen, table = [], set(), {}
+    for i, p in enumerate(paths):
         for r in read_csv(p):
             if r.student in seen:
                 raise ValueError(f"student {r.student!r} appears in more than one table")
             seen.add(r.student)
+            table[r.student] = i
             rows.append(r)
-    return write_csv(sorted(rows, key=lambda r: r.student), out)
+    return write_csv(sorted(_duplicates_across(rows, table, roster), key=lambda r: r.student), out)
+
+
+def _duplicates_across(rows: list[GradeRow], table: dict[str, int], roster: dict | None) -> list[GradeRow]:
+    """``rows`` with a ``DUPLICATE ID`` note on those whose id and lab another table's row shares."""
+    from dataclasses import replace
+
+    from .intake import identity
+
+    groups: dict[tuple[str, str], list[GradeRow]] = {}
+    for r in rows:
+        sid = identity(r.student + ".ipynb", roster)[0]
+        if sid and r.lab:
+            groups.setdefault((sid, r.lab), []).append(r)
+    notes = {}
+    for (sid, _), group in groups.items():
+        if len({table[r.student] for r in group}) > 1:
+            for r in group:
+                others = ", ".join(o.student for o in group if o is not r)
+                notes[r.student] = f"DUPLICATE ID {excerpt(sid, 40)!r} (another shard): also {excerpt(others, 200)}"
+    return [replace(r, notes="; ".join(x for x in (notes[r.student], r.notes) if x)) if r.student in notes else r
+            for r in rows]
 
 
 def summary(rows: list[GradeRow]) -> str:

@@ -55,7 +55,7 @@ from .caps import Caps, Cgroup
 from .gradetable import GradeRow, RowWriter, excerpt, merge_csv, read_csv, summary, write_csv
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
                      resolve_lab)
-from .sandbox import NO_SANDBOX_WARNING, sandbox_available
+from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
@@ -156,7 +156,8 @@ def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps
     cgroup = Cgroup(caps)
     job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
                caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
-               scratch=str(scratch), notebook_timeout=notebook_timeout)
+               scratch=str(scratch), notebook_timeout=notebook_timeout,
+               as_nobody=bool(sandbox and kernel_runs_as_nobody()))  # probed once, here
     lines, ended, _ = forked_runner(job, wall, int(wall) + 30)
     return lines, ended, cgroup
 
@@ -470,7 +471,7 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     if args.folder[:1] == ["merge"]:
         try:
-            merge_csv(args.folder[1:], args.out)
+            merge_csv(args.folder[1:], args.out, read_roster(args.roster) if args.roster else None)
         except (OSError, ValueError, KeyError) as e:
             print(f"error: {e}", file=sys.stderr)
             return 2

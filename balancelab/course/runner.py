@@ -38,7 +38,7 @@ from pathlib import Path
 from .caps import Caps, Cgroup
 from .check.data import encode_answer
 from .gradetable import excerpt
-from .sandbox import SHARE, WORK, limited, sandbox_command
+from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
 
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
 
@@ -149,7 +149,10 @@ def _kernel_manager_class():
             if self.sandboxed:  # the kernel's copy names its sockets where it sees the folder
                 info = json.loads(Path(conn).read_text())
                 info["ip"] = f"{SHARE}/k"
-                Path(conn).with_name("kernel-sandbox.json").write_text(json.dumps(info))
+                mine = Path(conn).with_name("kernel-sandbox.json")
+                mine.write_text(json.dumps(info))
+                if kernel_runs_as_nobody():  # its reader, alone (the scratch folder is the grader's)
+                    os.chown(mine, NOBODY, NOBODY)
                 conn = f"{SHARE}/kernel-sandbox.json"
             return [a.replace("{connection_file}", conn) for a in self.kernel_spec.argv]
 
@@ -337,6 +340,8 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     SandboxKernelManager = SandboxKernelManager or _kernel_manager_class()
     caps, share, path = caps or Caps(), Path(share).resolve(), Path(path).resolve()
     os.chdir(share)
+    if sandbox and kernel_runs_as_nobody():  # the kernel (uid 65534) makes its sockets here
+        os.chown(share, NOBODY, NOBODY)
     nb = nbformat.read(path, as_version=4)
     cells = [c for c in nb.cells]
     nb.cells = [nbformat.v4.new_code_cell("")]
@@ -490,6 +495,8 @@ def _grade(job: dict, emit) -> None:
     from . import check as _check  # the grader's own checks
 
     caps = Caps(**job.get("caps", {}))
+    if "as_nobody" in job:  # the grader probed the sandbox once for all its runners
+        assume_kernel_user(bool(job["as_nobody"]))
     variables = [t.variable for t in _check.tasks(job["lab"])] + ["STUDENT_ID"]
     start = time.monotonic()
     try:

@@ -11,9 +11,10 @@ environment variable of the grader; one host folder may be shared (the kernel's 
 When the command ends or is killed every process it started dies with its PID namespace
 (a detached child included). It may not make user namespaces of its own (``--disable-userns``):
 without one it cannot mount anything (a cgroup file system to raise its own caps included).
-Note: bubblewrap run by root maps ``nobody`` to the host's root user; the kernel then has no
-capability and sees no host file it could write, but a grader run by an unprivileged account is
-safer still (the Python and the package must then be readable by that account).
+Run by root, bubblewrap alone would map ``nobody`` to the host's root user (without capabilities);
+so a root grader uses two steps (:func:`kernel_runs_as_nobody`): the kernel is then the host's uid
+65534. Where that cannot work (no ``setpriv``, no unprivileged user namespaces, a Python only root
+may read) the one-step sandbox stays, its kernel root without any capability.
 
 Without bubblewrap the command runs in a process group of its own with resource limits
 (CPU time, file size, address space), and :func:`run_limited` warns once that submissions
@@ -31,7 +32,8 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited",
+__all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited", "kernel_runs_as_nobody", "NOBODY",
+           "assume_kernel_user",
            "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK", "SHARE"]
 
 NO_SANDBOX_WARNING = ("no sandbox: bubblewrap (bwrap) is missing, does not work here or was turned off, so "
@@ -192,12 +194,122 @@ def sandbox_command(cmd: list[str], share: str | Path | None = None, caps=None,
     if share is not None:
         shared = ["--bind", str(Path(share).resolve()), SHARE]
     setenv = [x for k, v in env.items() for x in ("--setenv", k, str(v))]
+    if kernel_runs_as_nobody():
+        return _nobody_command(list(cmd), shared, caps, setenv)
     return [bwrap_path() or "bwrap", "--dev", "/dev", "--proc", "/proc",
             "--size", str(caps.tmp), "--tmpfs", "/tmp", "--size", str(caps.shm), "--tmpfs", "/dev/shm",
             "--size", str(caps.work), "--tmpfs", WORK, *kernel_binds(), *shared,
             "--unshare-all", "--unshare-user", "--uid", "65534", "--gid", "65534", "--hostname", "sandbox",
             "--disable-userns", "--cap-drop", "ALL", "--die-with-parent", "--new-session", "--clearenv", *setenv,
             "--chdir", WORK, "--"] + list(cmd)
+
+
+#: The host user and group the kernel runs as when the grader is root.
+NOBODY = 65534
+#: Drop from root to :data:`NOBODY` for good: no groups, no capability in any set, no new privileges.
+_SETPRIV = ["--reuid", str(NOBODY), "--regid", str(NOBODY), "--clear-groups", "--inh-caps=-all",
+            "--bounding-set=-all", "--no-new-privs", "--"]
+
+
+def kernel_runs_as_nobody() -> bool:
+    """Whether the kernel runs as the host's unprivileged user ``nobody`` (65534) in two steps.
+
+    As root, bubblewrap's own user namespace would map the kernel to the host's root user (without
+    capabilities, but the owner of every root file). So a root grader builds the sandbox's file
+    system as root (outside any user namespace: the Python under a home of mode 700 can still be
+    bound, and the folders above each bind are made readable), drops to uid and gid 65534 for good
+    (``setpriv``), and only then a second, unprivileged bubblewrap makes the user namespace (with
+    ``--disable-userns``). Needs ``setpriv`` (Debian: util-linux) and unprivileged user namespaces.
+
+    Returns
+    -------
+    bool
+        True when the grader is root and the two-step sandbox works here: a Python in it, as uid
+        65534, can import ``balancelab`` and ``ipykernel`` (a Python or a package folder that only
+        root may read, such as one under a folder of mode 700, keeps the one-step sandbox, whose
+        kernel is root without capabilities).
+
+    Examples
+    --------
+    >>> kernel_runs_as_nobody() in (True, False)
+    True
+    """
+    if os.geteuid() != 0:
+        return False
+    binds = tuple(kernel_binds())
+    if binds not in _TWO_STEP:
+        _TWO_STEP[binds] = _two_step_works(binds)
+    return _TWO_STEP[binds]
+
+
+#: Whether the two-step sandbox works, per set of binds (probed once; a grader passes its answer to
+#: the runners it forks with :func:`assume_kernel_user`, so that no runner pays for the probe).
+_TWO_STEP: dict[tuple, bool] = {}
+
+
+def assume_kernel_user(as_nobody: bool) -> None:
+    """Take the grader's answer of :func:`kernel_runs_as_nobody` for this process's binds (no probe).
+
+    Parameters
+    ----------
+    as_nobody : bool
+        What :func:`kernel_runs_as_nobody` said in the grader.
+
+    Examples
+    --------
+    >>> assume_kernel_user(kernel_runs_as_nobody())
+    """
+    _TWO_STEP[tuple(kernel_binds())] = bool(as_nobody)
+
+
+def _two_step_works(binds: tuple) -> bool:
+    if bwrap_path() is None or shutil.which("setpriv") is None:
+        return False
+    roots = [binds[i + 2] for i, a in enumerate(binds) if a == "--ro-bind"]
+    probe = [sys.executable, "-I", "-c", f"import os, balancelab.course.check, ipykernel\nfor p in {roots!r}: os.listdir(p)"]
+    try:
+        r = subprocess.run(_nobody_command(probe, [], None, []), capture_output=True, timeout=120)
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+    return r.returncode == 0
+
+
+def _made_readable(binds: list[str], held: list[str]) -> list[str]:
+    """``--dir`` with mode 755 for every folder above a bind's destination that no earlier bind holds
+    (bubblewrap would make them 700, owned by root: out of reach of uid 65534)."""
+    out, held, made = [], [Path(h) for h in held], set()
+    for i, arg in enumerate(binds):
+        if arg not in ("--ro-bind", "--ro-bind-try", "--bind", "--symlink"):
+            continue
+        dest = Path(binds[i + 2])
+        for parent in reversed(dest.parents):
+            if parent == Path("/") or parent in made or any(parent == h or h in parent.parents for h in held):
+                continue
+            out += ["--perms", "0755", "--dir", str(parent)]
+            made.add(parent)
+        held.append(dest)
+    return out
+
+
+def _nobody_command(cmd: list[str], shared: list[str], caps, setenv: list[str]) -> list[str]:
+    """The two-step sandbox of :func:`kernel_runs_as_nobody` (the grader is root)."""
+    from .caps import Caps
+
+    caps = caps or Caps()
+    exe = bwrap_path() or "bwrap"
+    binds = kernel_binds() + shared
+    # /tmp and /dev/shm for everyone (sticky) under the binds (a Python under /tmp stays visible); the
+    # working folder is made by the unprivileged step, so that it belongs to uid 65534
+    tmpfs = ["--perms", "01777", "--size", str(caps.tmp), "--tmpfs", "/tmp",
+             "--perms", "01777", "--size", str(caps.shm), "--tmpfs", "/dev/shm"]
+    dirs = [x for d in (str(Path(WORK).parent), WORK) for x in ("--perms", "0755", "--dir", d)]
+    outer = [exe, "--dev", "/dev", "--proc", "/proc", *tmpfs, *dirs, *_made_readable(binds, ["/tmp", "/dev"]),
+             *binds, "--unshare-pid", "--unshare-ipc", "--unshare-uts", "--unshare-net", "--unshare-cgroup",
+             "--hostname", "sandbox", "--die-with-parent", "--new-session", "--clearenv", *setenv, "--chdir", "/", "--"]
+    inner = [exe, "--bind", "/", "/", "--size", str(caps.work), "--tmpfs", WORK, "--unshare-user", "--disable-userns",
+             "--uid", str(NOBODY), "--gid", str(NOBODY), "--cap-drop", "ALL", "--die-with-parent", "--chdir", WORK,
+             "--"]
+    return outer + [shutil.which("setpriv") or "setpriv", *_SETPRIV] + inner + list(cmd)
 
 
 @dataclass

@@ -7,6 +7,7 @@ is :mod:`.answers`' job.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -111,6 +112,10 @@ class Task:
         For a task with personal numbers: ``numbers(rng)`` draws a student's numbers (a dict)
         from a seeded generator, ``numbers(None)`` gives the published ones; the judge is
         then called as ``judge(answer, numbers)``.
+    distinct : (callable, float), optional
+        ``(value, rel)``: a student's numbers are drawn again (up to 50 times) until ``value(numbers)``
+        differs from ``value`` of the published numbers by more than ``rel`` (relative), so that the
+        published answer is wrong for every student.
 
     Examples
     --------
@@ -128,13 +133,14 @@ class Task:
     judge: Callable[[Any], tuple[bool, str, str]] = field(repr=False, compare=False)
     points: float = 1.0
     numbers: Callable | None = field(default=None, repr=False, compare=False)
+    distinct: tuple | None = field(default=None, repr=False, compare=False)
 
 
 _TASKS: dict[str, Task] = {}
 
 
 def register_task(id: str, title: str, variable: str, kind: str, expects: str,
-                  points: float = 1.0, numbers: Callable | None = None) -> Callable:
+                  points: float = 1.0, numbers: Callable | None = None, distinct: tuple | None = None) -> Callable:
     """Decorator declaring a task: the decorated function is its judge.
 
     A judge takes the student's answer and returns ``(correct, message, hint)`` (the
@@ -144,7 +150,7 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
     ----------
     id : str
         ``"<lab>.<n>"``, e.g. ``"2.4"``; registering an id again replaces the task.
-    title, variable, kind, expects, points, numbers
+    title, variable, kind, expects, points, numbers, distinct
         As in :class:`Task`.
 
     Returns
@@ -165,7 +171,7 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
         raise ValueError(f"kind must be 'numeric', 'symbolic' or 'design', got {kind!r}")
 
     def register(fn):
-        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points, numbers)
+        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points, numbers, distinct)
         return fn
 
     return register
@@ -247,18 +253,34 @@ def task_numbers(task_id: str, student: str | None = None) -> dict:
     >>> task_numbers("2.1", "s1234") == task_numbers("2.1", "s1234") != task_numbers("2.1", "s9876")
     True
     """
-    import hashlib
-
-    import numpy as np
-
     t = _TASKS.get(str(task_id))
     if t is None or t.numbers is None:
         return {}
     student = _STUDENT["id"] if student is None else str(student).strip()
+    return dict(_drawn(t.id, student))
+
+
+@functools.lru_cache(maxsize=256)
+def _drawn(task_id: str, student: str) -> dict:
+    """A task's numbers for ``student`` (cached: a ``distinct`` draw may compute answers)."""
+    import hashlib
+
+    import numpy as np
+
+    t = _TASKS[task_id]
     if not student:
         return dict(t.numbers(None))
     seed = int.from_bytes(hashlib.sha256(f"balancelab:{t.id}:{student}".encode()).digest()[:8], "big")
-    return dict(t.numbers(np.random.default_rng(seed)))
+    rng = np.random.default_rng(seed)
+    mine = dict(t.numbers(rng))
+    if t.distinct is not None:
+        value, rel = t.distinct
+        published = value(t.numbers(None))
+        for _ in range(50):
+            if abs(value(mine) / published - 1) > rel:
+                break
+            mine = dict(t.numbers(rng))
+    return mine
 
 
 def explain(task_id: str) -> str:

@@ -32,7 +32,7 @@ LAB1_FOURBAR = dict(A=(0.0, 0.0), B=(0.6, 0.0), crank=0.2, coupler=0.5, rocker=0
 _LINKS = ("crank", "coupler", "rocker")
 
 
-def lab1_fourbar(crank_cw=None, rocker_cw=None) -> Design:
+def lab1_fourbar(crank_cw=None, rocker_cw=None, masses=None) -> Design:
     """The four-bar of lab 1, optionally with counterweights on the crank and the rocker.
 
     Parameters
@@ -41,6 +41,9 @@ def lab1_fourbar(crank_cw=None, rocker_cw=None) -> Design:
         ``(mass kg, (x, y) m)``: a counterweight on the crank (local frame: origin at its
         ground pivot ``A``, x-axis along the crank) or on the rocker (origin at its ground
         pivot ``B`` -- ``D`` in the lab's text -- x-axis along the rocker).
+    masses : (float, float, float), optional
+        Masses of crank, coupler and rocker (kg), e.g. a student's of task 1.4
+        (``task_numbers("1.4")["masses"]``); :data:`LAB1_FOURBAR`'s by default.
 
     Returns
     -------
@@ -57,8 +60,11 @@ def lab1_fourbar(crank_cw=None, rocker_cw=None) -> Design:
     """
     p = LAB1_FOURBAR
     kin = FourBarKinematics(p["A"], p["B"], p["crank"], p["coupler"], p["rocker"], branch=1)
+    masses = p["masses"] if masses is None else tuple(float(m) for m in masses)
+    if len(masses) != 3 or not all(m > 0 for m in masses):
+        raise ValueError(f"masses (kg) must be three positive numbers (crank, coupler, rocker), got {masses!r}")
     loads = [gravity_load(body, com, mass, name)
-             for body, (name, mass, com) in enumerate(zip(_LINKS, p["masses"], p["coms"]), start=1)]
+             for body, (name, mass, com) in enumerate(zip(_LINKS, masses, p["coms"]), start=1)]
     for body, cw, name in ((1, crank_cw, "crank counterweight"), (3, rocker_cw, "rocker counterweight")):
         if cw is not None:
             m, pt = cw
@@ -77,11 +83,15 @@ def _lamp_numbers(rng) -> dict:
 
 
 @register_task("1.1", "distance of the counterweight from the pivot", "r_c", "numeric",
-               "a number in metres (or a string like '22 cm'); accepted within 0.5 %", numbers=_lamp_numbers)
+               "a number in metres (or a string like '22 cm'); accepted within 0.5 %", numbers=_lamp_numbers,
+               distinct=(lambda lamp: _r_c(lamp), 0.015))
 def _t11(answer, lamp):
-    d = single_link_counterweight(mass=lamp["mass"], length=lamp["length"], counter_mass=lamp["counter_mass"],
-                                  link_mass=lamp["link_mass"])
-    return numeric(answer, d.parameters["r_c"], "length")
+    return numeric(answer, _r_c(lamp), "length")
+
+
+def _r_c(lamp: dict) -> float:
+    return single_link_counterweight(mass=lamp["mass"], length=lamp["length"], counter_mass=lamp["counter_mass"],
+                                     link_mass=lamp["link_mass"]).parameters["r_c"]
 
 
 @register_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",
@@ -116,10 +126,27 @@ def _counterweight(answer: dict, key: str) -> tuple[float, tuple[float, float]]:
     return m, tuple(pt)
 
 
+def _fourbar_numbers(rng) -> dict:
+    """Task 1.4's link masses (kg): :data:`LAB1_FOURBAR`'s, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(masses=tuple(LAB1_FOURBAR["masses"]))
+    return dict(masses=(round(float(rng.uniform(0.6, 1.0)), 2), round(float(rng.uniform(1.0, 1.5)), 2),
+                        round(float(rng.uniform(0.8, 1.3)), 2)))
+
+
+def _crank_moment(numbers: dict) -> float:
+    """First moment (kg m) the crank carries about its pivot: its own mass and the coupler's share."""
+    p, (m1, m3, _) = LAB1_FOURBAR, numbers["masses"]
+    share = m3 * (1 - p["coms"][1][0] / p["coupler"])
+    return m1 * p["coms"][0][0] + share * p["crank"]
+
+
 @register_task("1.4", "counterweights that balance the four-bar (open design)", "counterweights", "design",
                "a dict {'crank': (mass, (x, y)), 'rocker': (mass, (x, y))} in kg and m, local frames; "
-               "each mass at most 6 kg and at most 0.25 m from its pivot; balanced to 0.1 %", points=2)
-def _t14(answer):
+               "each mass at most 6 kg and at most 0.25 m from its pivot; balanced to 0.1 % with your "
+               "link masses (task_numbers('1.4'))", points=2, numbers=_fourbar_numbers,
+               distinct=(_crank_moment, 0.01))
+def _t14(answer, fourbar):
     a = as_mapping(answer, ("crank", "rocker"), "your counterweights")
     p = LAB1_FOURBAR
     parts, cons = {}, []
@@ -128,5 +155,5 @@ def _t14(answer):
         cons.append((m <= p["max_mass"] + 1e-12, f"{key} counterweight heavier than {p['max_mass']} kg"))
         cons.append((float(np.hypot(*pt)) <= p["max_radius"] + 1e-12,
                      f"{key} counterweight farther than {p['max_radius']} m from its pivot"))
-    d = lab1_fourbar(parts["crank"], parts["rocker"])
+    d = lab1_fourbar(parts["crank"], parts["rocker"], masses=fourbar["masses"])
     return design_balanced(d, cons)

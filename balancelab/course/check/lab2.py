@@ -65,7 +65,8 @@ def _lamp_numbers(rng) -> dict:
 
 
 @register_task("2.1", "spring rate that balances the lamp arm", "k_lamp", "numeric",
-               "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %", numbers=_lamp_numbers)
+               "a number in N/m (or a string like '0.2 N/mm'); accepted within 0.5 %", numbers=_lamp_numbers,
+               distinct=(lambda lamp: single_link_spring(**lamp).parameters["k"], 0.015))
 def _t21(answer, lamp):
     return numeric(answer, single_link_spring(**lamp).parameters["k"], "stiffness")
 
@@ -97,10 +98,19 @@ def _t23(answer):
     return numeric(answer, float(energy), "energy")
 
 
+def _lever_numbers(rng) -> dict:
+    """Task 2.4's load: ``weight`` (N) at ``length`` (m) of :data:`LAB2_LEVER`, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(weight=LAB2_LEVER["weight"], length=LAB2_LEVER["length"])
+    return dict(weight=round(float(rng.uniform(20.0, 40.0)), 1), length=round(float(rng.uniform(0.45, 0.7)), 2))
+
+
 @register_task("2.4", "a ZFL spring that balances the lever within the limits (open design)", "lever_spring",
                "design", "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; "
-               "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 %", points=2)
-def _t24(answer):
+               "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 % with your load "
+               "(task_numbers('2.4'))", points=2, numbers=_lever_numbers,
+               distinct=(lambda load: load["weight"] * load["length"], 0.01))
+def _t24(answer, load):
     k, pa, pb = spring(answer)
     p = LAB2_LEVER
     cons = [(k <= p["k_max"] * (1 + 1e-12), f"k above {p['k_max']:g} N/m"),
@@ -108,4 +118,4 @@ def _t24(answer):
              f"anchor b farther than {p['anchor_max']} m from the pivot"),
             (np.hypot(*pa) <= p["attach_max"] + 1e-12,
              f"attachment a farther than {p['attach_max']} m from the pivot")]
-    return design_balanced(lab2_lever(k, tuple(pa), tuple(pb)), cons)
+    return design_balanced(lab2_lever(k, tuple(pa), tuple(pb), W=load["weight"], l=load["length"]), cons)

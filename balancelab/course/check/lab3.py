@@ -51,29 +51,39 @@ def lab3_torque_error(design: Design, theta_range=None, n: int = 241) -> float:
     return float(np.max(np.abs(torque)) / (p["mass"] * G * p["length"]))
 
 
-@functools.lru_cache(maxsize=1)
-def _pulley_radius_limit() -> float:
-    """Pulley radius (m) at which lab 3's lever has its largest allowed torque error (1 % of ``m g r``).
+def _pulley_numbers(rng) -> dict:
+    """Task 3.1's lever (kg, m): the published numbers of :data:`LAB3_LEVER`, or a student's (from ``rng``)."""
+    p = LAB3_LEVER
+    if rng is None:
+        return {k: p[k] for k in ("mass", "length", "b", "c")}
+    return dict(mass=round(rng.uniform(1.5, 2.5), 1), length=round(rng.uniform(0.4, 0.6), 2),
+                b=round(rng.uniform(0.28, 0.40), 2), c=round(rng.uniform(0.12, 0.22), 2))
 
-    Private: it is task 3.1's answer. Computed once with scipy's ``brentq`` on the exact
-    string model (:func:`balancelab.methods.realize.pulley_balance_error`).
+
+@functools.lru_cache(maxsize=64)
+def _pulley_radius_limit(mass: float, length: float, b: float, c: float) -> float:
+    """Pulley radius (m) at which a lever has a torque error of ``pulley_error`` (1 %) of ``m g r``.
+
+    Private: the judge of task 3.1 calls it with the numbers it judges with. scipy's ``brentq``
+    on the exact string model (:func:`balancelab.methods.realize.pulley_balance_error`).
     """
     from scipy.optimize import brentq
 
-    p = LAB3_LEVER
-    scale = p["mass"] * G * p["length"]
+    scale = mass * G * length
 
     def excess(radius):
-        lever = pulley_lever(mass=p["mass"], length=p["length"], b=p["b"], c=p["c"], radius=radius)
-        return pulley_balance_error(lever).residual_torque / scale - p["pulley_error"]
+        lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=radius)
+        return pulley_balance_error(lever).residual_torque / scale - LAB3_LEVER["pulley_error"]
 
     return brentq(excess, 1e-5, 0.05, xtol=1e-8)
 
 
 @register_task("3.1", "largest pulley radius for a 1 % torque error", "pulley_radius", "numeric",
-               "a number in metres (or a string like '2.8 mm'); accepted within 2 %")
-def _t31(answer):
-    return numeric(answer, _pulley_radius_limit(), "length", rtol=0.02)
+               "a number in metres (or a string like '2.8 mm'); accepted within 2 %", numbers=_pulley_numbers,
+               distinct=(lambda lever: _pulley_radius_limit(**lever), 0.06))
+def _t31(answer, lever):
+    return numeric(answer, _pulley_radius_limit(lever["mass"], lever["length"], lever["b"], lever["c"]),
+                   "length", rtol=0.02)
 
 
 @register_task("3.2", "free length of the partner spring that makes a ZFL pair", "partner_free_length",

@@ -41,8 +41,14 @@ LAB7_SLIDER = dict(crank=0.25, rod=0.7, crank_mass=1.2, rod_mass=0.8, rod_com=0.
 LAB7_LAMP = dict(box=((-0.15, 0.15), (0.0, 0.3)), k_max=300.0, max_springs=3)
 
 
-def lab7_arm() -> Design:
+def lab7_arm(numbers: dict | None = None) -> Design:
     """Lab 7's unbalanced 3R lamp arm (:func:`~balancelab.methods.general.examples.arm_3r` with :data:`LAB7_ARM`).
+
+    Parameters
+    ----------
+    numbers : dict, optional
+        ``lengths`` (m), ``masses`` (kg) and ``lamp`` (kg) instead of :data:`LAB7_ARM`'s, e.g. a
+        student's personal numbers of task 7.2 (``task_numbers("7.2")``).
 
     Returns
     -------
@@ -53,7 +59,7 @@ def lab7_arm() -> Design:
     >>> lab7_arm().bodies
     ('ground', 'upper', 'fore', 'hand')
     """
-    return arm_3r(**LAB7_ARM)
+    return arm_3r(**(LAB7_ARM if numbers is None else numbers))
 
 
 def lab7_candidates(arm: Design) -> list:
@@ -77,25 +83,45 @@ def lab7_candidates(arm: Design) -> list:
     return [c for c in all_pairs(arm) if {c[0][0], c[1][0]} != {"ground", "upper"}]
 
 
-@functools.lru_cache(maxsize=None)
-def _arm_numbers() -> tuple[int, float]:
-    arm = lab7_arm()
-    cands = lab7_candidates(arm)
-    left = free_choices(arm, springs=cands).free_choices
-    stiff = balance(arm, springs=cands, objective="min_stiffness")
-    return left, float(sum(s.k for s in stiff.springs))
+def _arm_personal(rng) -> dict:
+    """Task 7.2's arm (m, kg): :data:`LAB7_ARM`, or a student's (lengths, masses and lamp from ``rng``)."""
+    if rng is None:
+        return {k: tuple(v) if isinstance(v, tuple) else v for k, v in LAB7_ARM.items()}
+    lengths = tuple(round(float(x), 2) for x in (rng.uniform(0.38, 0.52), rng.uniform(0.28, 0.42),
+                                                 rng.uniform(0.2, 0.3)))
+    masses = tuple(round(float(x), 1) for x in (rng.uniform(1.4, 2.2), rng.uniform(0.9, 1.5), rng.uniform(0.6, 1.0)))
+    return dict(lengths=lengths, masses=masses, lamp=round(float(rng.uniform(0.3, 0.5)), 2))
+
+
+def _key(numbers: dict) -> tuple:
+    return (tuple(numbers["lengths"]), tuple(numbers["masses"]), float(numbers["lamp"]))
+
+
+@functools.lru_cache(maxsize=64)
+def _free_choices_left(key: tuple) -> int:
+    arm = lab7_arm(dict(zip(("lengths", "masses", "lamp"), key)))
+    return free_choices(arm, springs=lab7_candidates(arm)).free_choices
+
+
+@functools.lru_cache(maxsize=64)
+def _least_stiffness(key: tuple) -> float:
+    arm = lab7_arm(dict(zip(("lengths", "masses", "lamp"), key)))
+    stiff = balance(arm, springs=lab7_candidates(arm), objective="min_stiffness")
+    return float(sum(s.k for s in stiff.springs))
 
 
 @register_task("7.1", "free choices left on lab 7's 3R arm without the ground-to-upper spring", "n_free", "numeric",
                "a whole number; accepted within 0.5 %")
 def _t71(answer):
-    return numeric(answer, float(_arm_numbers()[0]), "ratio")
+    # a count of the structure (springs and joints), the same for any lengths and masses: no personal numbers
+    return numeric(answer, float(_free_choices_left(_key(_arm_personal(None)))), "ratio")
 
 
 @register_task("7.2", "least total stiffness of lab 7's 3R arm with those candidates", "k_total_min",
-               "numeric", "a number in N/m (or with a unit); accepted within 0.5 %")
-def _t72(answer):
-    return numeric(answer, _arm_numbers()[1], "stiffness")
+               "numeric", "a number in N/m (or with a unit); accepted within 0.5 %", numbers=_arm_personal,
+               distinct=(lambda arm: _least_stiffness(_key(arm)), 0.015))
+def _t72(answer, arm):
+    return numeric(answer, _least_stiffness(_key(arm)), "stiffness")
 
 
 def lab7_slider_crank() -> Design:
