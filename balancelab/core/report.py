@@ -24,6 +24,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .cancel import EXACT, null_subset
 from .validation import positive_int
 
 __all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
@@ -228,7 +229,8 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0) -> float:
+def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0,
+               spring_energies: np.ndarray | None = None, tolerance: float = BALANCE_TOLERANCE) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
@@ -238,12 +240,16 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
     cancel each other cannot inflate it.
 
     Loads that form a *set* of zero resultant force and zero moment on one body (three forces, say)
-    do no work in any motion: they are left out first (:func:`_null_sets`). Sets that cancel only
-    through the kinematics (``F, F, -2F`` on three bodies of a parallelogram) cannot be told from a
-    counterweight balancing a mass and still count. A design whose loads exchange no energy
-    (a spring-loaded mechanism, or loads that only stand still; ``L`` below ``roundoff`` and
-    below ``1e-12`` of the loads' largest energy) has its springs as the load: the scale is then ``scale``, the sum
-    of the spreads of every element's energy.
+    do no work in any motion: they are left out first (:func:`_null_sets`). Then, with the springs'
+    energies given, the largest part of the design whose elements' energies sum to a constant
+    (:func:`balancelab.core.cancel.null_subset`, to ``min(tolerance, 1e-9)``; loads ``F, F, -F`` on
+    three bodies of a parallelogram, or stiff springs pulling against each other) is left out too,
+    whatever bodies it acts on: it exchanges no energy with the rest, so it cannot make the rest look
+    balanced. When what is left sums to a constant as well (the design is made of balanced parts) the
+    yardstick is the loads' sum above. A design whose loads exchange no energy (a spring-loaded
+    mechanism, or loads that only stand still; ``L`` below ``roundoff`` and below ``1e-12`` of the
+    loads' largest energy) has its springs as the load: the spreads of the springs left over, or
+    ``scale``, the sum of the spreads of every element's own energy, when they all cancel.
 
     Parameters
     ----------
@@ -256,6 +262,10 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
         Sum of the spreads of every load's and spring's energy (J).
     roundoff : float
         The round-off of the summed energy (J), see :data:`ROUND_OFF_ALLOWANCE`.
+    spring_energies : numpy.ndarray, shape (m, n_springs), optional
+        Energy of each spring (J); without it no set cancelling across bodies is left out.
+    tolerance : float
+        The verdict's tolerance; sets cancelling to ``min(tolerance, 1e-9)`` are left out.
 
     Returns
     -------
@@ -284,10 +294,36 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
                 if group[j] == j and np.max(np.abs(pts[:, i] - pts[:, j])) <= 1e-9 * size:
                     group[i] = j
                     break
-        sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
-        total = sum(float(np.ptp(e)) for e in _cancel(sums))
-    still = _ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0)
-    return total if total > max(still, roundoff) else scale
+        sums = _cancel([load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1)
+                        for g in sorted(set(group))])
+        total = sum(float(np.ptp(e)) for e in sums)
+    else:
+        sums = []
+    still = max(_ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0), roundoff)
+    if spring_energies is not None:
+        left = _left_over(sums, np.asarray(spring_energies, dtype=float), min(tolerance, EXACT))
+        if left is not None:
+            loads_left, springs_left = left
+            return loads_left if loads_left > still else springs_left if springs_left > roundoff else scale
+    return total if total > still else scale
+
+
+def _left_over(load_sums: list, spring_energies: np.ndarray, eta: float):
+    """``(loads' spread, springs' spread)`` (J) of what is left of the design once its largest null set
+    is taken out, or None when nothing is taken out or what is left is null too (the design is then
+    made of balanced parts, and the loads' sum is the yardstick)."""
+    m = len(spring_energies)
+    E = np.column_stack(list(load_sums) + [spring_energies]) if load_sums else spring_energies
+    E = E.reshape(m, -1)
+    null = null_subset(E, eta)
+    if not null.any():
+        return None
+    rest = E[:, ~null]
+    spread = np.ptp(rest, axis=0)
+    if np.ptp(rest.sum(-1)) <= eta * spread.sum() + 1e-14 * float(np.abs(rest).max(initial=0.0)):
+        return None
+    is_load = (np.arange(E.shape[1]) < len(load_sums))[~null]
+    return float(spread[is_load].sum()), float(spread[~is_load].sum())
 
 
 def _null_sets(loads) -> set:
@@ -365,7 +401,7 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
-    yardstick = load_scale(design, q, vl, scale, roundoff)
+    yardstick = load_scale(design, q, vl, scale, roundoff, vs, tolerance)
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
