@@ -30,10 +30,14 @@ def _subsets(n: int) -> np.ndarray:
 
 
 def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray:
-    """The null set of columns of ``energies`` whose own spreads add up to the most.
+    """The largest part of a design made of null sets: columns of ``energies`` that split into sets
+    whose energies each sum to a constant, their own spreads adding up to the most.
 
     A set is null when ``ptp(sum of its columns) <= eta * sum of their ptp`` (plus the round-off of
-    the sum). Columns whose energy does not vary are never in it.
+    the sum) and it is either *irreducible* (no part of it is null) or splits into two such parts.
+    So a huge null set next to an unbalanced element is found without the element: the two together
+    vary by little compared with the huge set, but the element alone is not null. Columns whose energy
+    does not vary are never in it.
 
     Parameters
     ----------
@@ -61,24 +65,53 @@ def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray
     out = np.zeros(E.shape[1], dtype=bool)
     spread = np.ptp(E, axis=0)
     live = np.flatnonzero(spread > 0)
-    n = len(live) - (1 if proper else 0)
-    if n < 2 or len(live) > MAX_ENUMERATED:
+    if len(live) - (1 if proper else 0) < 2 or len(live) > MAX_ENUMERATED:
         return out
-    C = E[:, live] - E[:, live].mean(0)
-    s = spread[live]
-    sets = _subsets(len(live))
+    codes, weight = _null_codes(E[:, live], spread[live], eta)
     if proper:
-        sets = sets[sets.sum(1) < len(live)]
+        keep = codes != (1 << len(live)) - 1
+        codes, weight = codes[keep], weight[keep]
+    ok = _packable(codes)
+    if ok.any():
+        best = int(codes[ok][np.argmax(weight[ok])])
+        out[live[[(best >> i) & 1 == 1 for i in range(len(live))]]] = True
+    return out
+
+
+def _null_codes(E: np.ndarray, s: np.ndarray, eta: float):
+    """Bit codes and weights (sum of spreads, J) of the null subsets of the columns of ``E``."""
+    codes = np.arange(1, 2 ** len(s), dtype=np.int64)
+    sets = ((codes[:, None] >> np.arange(len(s))) & 1).astype(float)
+    two = sets.sum(1) >= 2
+    codes, sets = codes[two], sets[two]
     weight = sets @ s
-    noise = 1e-14 * (sets @ np.max(np.abs(E[:, live]), axis=0))  # round-off of the sum
+    noise = 1e-14 * (sets @ np.max(np.abs(E), axis=0))  # round-off of the sum
+    C = E - E.mean(0)
     _, sv, vt = np.linalg.svd(C, full_matrices=False)
     norm = np.linalg.norm((sets @ vt.T) * sv, axis=1)  # ||C x||: at most sqrt(m) ptp(C x)
-    keep = norm <= np.sqrt(len(E)) * (eta * weight + noise) + 1e-12 * sv[0] * np.linalg.norm(sets, axis=1)
-    order = np.flatnonzero(keep)[np.argsort(-weight[keep], kind="stable")]
-    for start in range(0, len(order), _CHUNK):
-        idx = order[start:start + _CHUNK]
-        ok = np.ptp(E[:, live] @ sets[idx].T, axis=0) <= eta * weight[idx] + noise[idx]
-        if ok.any():
-            out[live[sets[idx[np.argmax(ok)]] > 0]] = True
-            return out
+    keep = np.flatnonzero(norm <= np.sqrt(len(E)) * (eta * weight + noise)
+                          + 1e-12 * sv[0] * np.linalg.norm(sets, axis=1))
+    found = []
+    for start in range(0, len(keep), _CHUNK):
+        idx = keep[start:start + _CHUNK]
+        found.append(idx[np.ptp(E @ sets[idx].T, axis=0) <= eta * weight[idx] + noise[idx]])
+    idx = np.concatenate(found) if found else np.zeros(0, dtype=np.int64)
+    return codes[idx], weight[idx]
+
+
+def _packable(codes: np.ndarray) -> np.ndarray:
+    """For each null set (bit code): is it irreducible, or two packable null sets side by side?"""
+    order = np.argsort([bin(int(c)).count("1") for c in codes], kind="stable")
+    codes = codes[order]
+    ok = np.zeros(len(codes), dtype=bool)
+    for i, c in enumerate(codes):
+        inner = (codes[:i] & c) == codes[:i]  # the null sets inside c (all smaller, so decided)
+        inner &= codes[:i] != c
+        if not inner.any():
+            ok[i] = True
+            continue
+        parts = codes[:i][inner & ok[:i]]
+        ok[i] = bool(np.isin(c ^ parts, parts).any())
+    out = np.zeros(len(codes), dtype=bool)
+    out[order] = ok
     return out
