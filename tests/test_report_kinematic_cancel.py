@@ -49,7 +49,7 @@ def by_hand(design, q, force, spring_error):
     return V
 
 
-@pytest.mark.parametrize("spring_error, force", [(None, 1e10), (1e-3, 1e8), (1e-6, 1e11)],
+@pytest.mark.parametrize("spring_error, force", [(None, 1e10), (1e-3, 1e8), (1e-6, 1e5)],
                          ids=["no spring", "spring off by 1e-3", "spring off by 1e-6"])
 def test_loads_cancelling_across_three_bodies_do_not_hide_an_imbalance(spring_error, force):
     d = parallelogram(force, spring_error)

@@ -29,15 +29,16 @@ def _subsets(n: int) -> np.ndarray:
     return bits[bits.sum(1) >= 2]
 
 
-def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray:
+def null_subset(energies, eta: float = EXACT) -> np.ndarray:
     """The largest part of a design made of null sets: columns of ``energies`` that split into sets
     whose energies each sum to a constant, their own spreads adding up to the most.
 
     A set is null when ``ptp(sum of its columns) <= eta * sum of their ptp`` (plus the round-off of
-    the sum) and it is either *irreducible* (no part of it is null) or splits into two such parts.
-    So a huge null set next to an unbalanced element is found without the element: the two together
-    vary by little compared with the huge set, but the element alone is not null. Columns whose energy
-    does not vary are never in it.
+    the sum). It counts as one piece when no part of it is null with a smaller residual ``ptp``
+    (its cancellation is its own, not borrowed from a part), else only when it splits into two
+    pieces. So a huge null set next to an unbalanced element is found without the element (the two
+    together vary little compared with the huge set, but more than the huge set alone), while a
+    balanced design with a spring of negligible rate is found whole.
 
     Parameters
     ----------
@@ -45,14 +46,12 @@ def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray
         Energy (J) of each element over ``m`` configurations.
     eta : float
         Relative tolerance of "sums to a constant", ``0 < eta < 1``.
-    proper : bool
-        Leave at least one varying column out (the set sought is then a part of the design).
 
     Returns
     -------
     numpy.ndarray of bool, shape (n,)
-        The set; all False when none is null (or when more than :data:`MAX_ENUMERATED` columns
-        vary: the search is exhaustive or not done).
+        The part; all False when none is null (or when more than :data:`MAX_ENUMERATED` columns
+        vary: the search is exhaustive or not done). Columns whose energy does not vary are never in it.
 
     Examples
     --------
@@ -65,13 +64,10 @@ def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray
     out = np.zeros(E.shape[1], dtype=bool)
     spread = np.ptp(E, axis=0)
     live = np.flatnonzero(spread > 0)
-    if len(live) - (1 if proper else 0) < 2 or len(live) > MAX_ENUMERATED:
+    if len(live) < 2 or len(live) > MAX_ENUMERATED:
         return out
-    codes, weight = _null_codes(E[:, live], spread[live], eta)
-    if proper:
-        keep = codes != (1 << len(live)) - 1
-        codes, weight = codes[keep], weight[keep]
-    ok = _packable(codes)
+    codes, weight, residual = _null_codes(E[:, live], spread[live], eta)
+    ok = _pieces(codes, residual)
     if ok.any():
         best = int(codes[ok][np.argmax(weight[ok])])
         out[live[[(best >> i) & 1 == 1 for i in range(len(live))]]] = True
@@ -79,7 +75,8 @@ def null_subset(energies, eta: float = EXACT, proper: bool = True) -> np.ndarray
 
 
 def _null_codes(E: np.ndarray, s: np.ndarray, eta: float):
-    """Bit codes and weights (sum of spreads, J) of the null subsets of the columns of ``E``."""
+    """Bit codes, weights (sum of spreads, J) and residuals (ptp of the sum, J) of the null subsets of
+    the columns of ``E``."""
     codes = np.arange(1, 2 ** len(s), dtype=np.int64)
     sets = ((codes[:, None] >> np.arange(len(s))) & 1).astype(float)
     two = sets.sum(1) >= 2
@@ -91,23 +88,26 @@ def _null_codes(E: np.ndarray, s: np.ndarray, eta: float):
     norm = np.linalg.norm((sets @ vt.T) * sv, axis=1)  # ||C x||: at most sqrt(m) ptp(C x)
     keep = np.flatnonzero(norm <= np.sqrt(len(E)) * (eta * weight + noise)
                           + 1e-12 * sv[0] * np.linalg.norm(sets, axis=1))
-    found = []
+    found, res = [], []
     for start in range(0, len(keep), _CHUNK):
         idx = keep[start:start + _CHUNK]
-        found.append(idx[np.ptp(E @ sets[idx].T, axis=0) <= eta * weight[idx] + noise[idx]])
+        ptp = np.ptp(E @ sets[idx].T, axis=0)
+        ok = ptp <= eta * weight[idx] + noise[idx]
+        found.append(idx[ok])
+        res.append(ptp[ok])
     idx = np.concatenate(found) if found else np.zeros(0, dtype=np.int64)
-    return codes[idx], weight[idx]
+    return codes[idx], weight[idx], (np.concatenate(res) if res else np.zeros(0))
 
 
-def _packable(codes: np.ndarray) -> np.ndarray:
-    """For each null set (bit code): is it irreducible, or two packable null sets side by side?"""
+def _pieces(codes: np.ndarray, residual: np.ndarray) -> np.ndarray:
+    """For each null set (bit code): is it one piece (no null part of it cancels better), or two
+    pieces side by side?"""
     order = np.argsort([bin(int(c)).count("1") for c in codes], kind="stable")
-    codes = codes[order]
+    codes, residual = codes[order], residual[order]
     ok = np.zeros(len(codes), dtype=bool)
     for i, c in enumerate(codes):
-        inner = (codes[:i] & c) == codes[:i]  # the null sets inside c (all smaller, so decided)
-        inner &= codes[:i] != c
-        if not inner.any():
+        inner = ((codes[:i] & c) == codes[:i]) & (codes[:i] != c)  # the null sets inside c (decided)
+        if not (residual[:i][inner] < residual[i]).any():
             ok[i] = True
             continue
         parts = codes[:i][inner & ok[:i]]

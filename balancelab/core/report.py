@@ -91,6 +91,9 @@ class BalanceReport:
         ``(max V - min V) / load_scale``: the number the verdict compares with ``tolerance``.
     q_units : tuple of str
         Unit of each coordinate (``"rad"`` or ``"m"``), for printing ``worst_q``.
+    cancelled : float
+        Sum of the spreads (J) of the elements left out of ``load_scale`` because their energies
+        sum to a constant (see :func:`load_scale`); 0 when none are.
 
     Examples
     --------
@@ -111,15 +114,18 @@ class BalanceReport:
     load_scale: float = math.nan
     load_variation: float = math.nan
     q_units: tuple = ()
+    cancelled: float = 0.0
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
         units = self.q_units or ("rad",) * len(np.atleast_1d(self.worst_q))
         q = format_q(units, self.worst_q)
         per = " or ".join(sorted(set(units), reverse=True))
+        left_out = (f"; elements that cancel each other, {self.cancelled:.4g} J, left out"
+                    if self.cancelled > 0 else "")
         return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
-                f"({self.load_scale:.4g} J) over {self.n} configurations; "
+                f"({self.load_scale:.4g} J{left_out}) over {self.n} configurations; "
                 f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
 
@@ -281,6 +287,11 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
     >>> bool(abs(load_scale(d, q, vl, s) - s) < 1e-9 * s)  # counterweights: every load counts
     True
     """
+    return _yardstick(design, q, load_energies, scale, roundoff, spring_energies, tolerance)[0]
+
+
+def _yardstick(design, q, load_energies, scale, roundoff=0.0, spring_energies=None, tolerance=BALANCE_TOLERANCE):
+    """``(load_scale, weight)`` (J): the yardstick, and the sum of the spreads of the null set left out."""
     null = _null_sets(design.loads)
     loads = [ld for i, ld in enumerate(design.loads) if i not in null]
     load_energies = load_energies[:, [i for i in range(len(design.loads)) if i not in null]]
@@ -303,27 +314,27 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
     if spring_energies is not None:
         left = _left_over(sums, np.asarray(spring_energies, dtype=float), min(tolerance, EXACT))
         if left is not None:
-            loads_left, springs_left = left
-            return loads_left if loads_left > still else springs_left if springs_left > roundoff else scale
-    return total if total > still else scale
+            loads_left, springs_left, weight = left
+            return (loads_left if loads_left > still else springs_left if springs_left > roundoff else scale), weight
+    return (total if total > still else scale), 0.0
 
 
 def _left_over(load_sums: list, spring_energies: np.ndarray, eta: float):
-    """``(loads' spread, springs' spread)`` (J) of what is left of the design once its largest null set
+    """``(loads' spread, springs' spread, null set's spread)`` (J) of what is left of the design once its largest null set
     is taken out, or None when nothing is taken out or what is left is null too (the design is then
     made of balanced parts, and the loads' sum is the yardstick)."""
     m = len(spring_energies)
     E = np.column_stack(list(load_sums) + [spring_energies]) if load_sums else spring_energies
     E = E.reshape(m, -1)
     null = null_subset(E, eta)
-    if not null.any():
-        return None
+    if not null.any() or null.sum() == int((np.ptp(E, axis=0) > 0).sum()):
+        return None  # nothing cancels, or the whole design does
     rest = E[:, ~null]
     spread = np.ptp(rest, axis=0)
     if np.ptp(rest.sum(-1)) <= eta * spread.sum() + 1e-14 * float(np.abs(rest).max(initial=0.0)):
         return None
     is_load = (np.arange(E.shape[1]) < len(load_sums))[~null]
-    return float(spread[is_load].sum()), float(spread[~is_load].sum())
+    return float(spread[is_load].sum()), float(spread[~is_load].sum()), float(np.ptp(E[:, null], axis=0).sum())
 
 
 def _null_sets(loads) -> set:
@@ -401,11 +412,13 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
-    yardstick = load_scale(design, q, vl, scale, roundoff, vs, tolerance)
+    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
+
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
                          balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
-                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design))
+                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design),
+                         cancelled=null_weight)
