@@ -20,6 +20,7 @@ EXACT: float = 1e-9
 MAX_ENUMERATED: int = 16
 
 _CHUNK = 2048
+_ROWS = 128
 
 
 def _subsets(n: int) -> np.ndarray:
@@ -83,10 +84,11 @@ def _null_codes(E: np.ndarray, s: np.ndarray, eta: float):
     codes, sets = codes[two], sets[two]
     weight = sets @ s
     noise = 1e-14 * (sets @ np.max(np.abs(E), axis=0))  # round-off of the sum
-    C = E - E.mean(0)
+    C = E[::max(1, len(E) // _ROWS)][:_ROWS]  # a prefilter on some rows (a large SVD calls BLAS threads)
+    C = C - E.mean(0)
     _, sv, vt = np.linalg.svd(C, full_matrices=False)
-    norm = np.linalg.norm((sets @ vt.T) * sv, axis=1)  # ||C x||: at most sqrt(m) ptp(C x)
-    keep = np.flatnonzero(norm <= np.sqrt(len(E)) * (eta * weight + noise)
+    norm = np.linalg.norm((sets @ vt.T) * sv, axis=1)  # ||C x||: at most sqrt(rows) ptp(E x)
+    keep = np.flatnonzero(norm <= np.sqrt(len(C)) * (eta * weight + noise)
                           + 1e-12 * sv[0] * np.linalg.norm(sets, axis=1))
     found, res = [], []
     for start in range(0, len(keep), _CHUNK):
