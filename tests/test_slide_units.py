@@ -94,3 +94,15 @@ def test_frame_labels_show_a_slide_in_mm_and_an_angle_in_degrees():
 def _sym(design, i):
     from balancelab.viz.energy import q_symbol
     return q_symbol(design, i)
+
+
+def test_errors_about_configurations_give_a_slide_in_metres():
+    design = slider_crank_driven_by_its_slide()
+    lo, hi = design.q_range[0]
+    with pytest.raises(bl.UnreachableConfiguration) as err:
+        design.poses([hi + 0.5])
+    text = str(err.value)
+    assert f"{hi + 0.5:.4g} m)" in text and f"s_1 in [{lo:.4g} m, {hi:.4g} m]" in text and "°" not in text
+    q = np.linspace(lo, lo + 0.01 * (hi - lo), 20)[:, None]
+    with pytest.raises(ValueError, match=r"s_1 spans [0-9.e-]+ m of [0-9.e-]+ m"):
+        design.balance_report(q)

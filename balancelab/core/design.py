@@ -278,11 +278,11 @@ class Design:
             (poses, ok), cache = self.kinematics.poses(qa), {}
         if not np.all(ok):
             bad = qa[~ok][0] if qa.ndim > 1 else qa
-            rng = ", ".join(f"{n} in [{np.degrees(lo):.2f}°, {np.degrees(hi):.2f}°]"
-                            for n, (lo, hi) in zip(self.q_names, self.q_range))
+            units = _report.q_units(self)  # degrees for angles, metres for slides
+            rng = ", ".join(f"{n} in [{_report.format_q((u, u), r)}]" for n, u, r in zip(self.q_names, units, self.q_range))
             raise UnreachableConfiguration(
-                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} rad "
-                f"({np.round(np.degrees(np.atleast_1d(bad)), 3).tolist()}°) cannot be reached; "
+                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} (rad or m: "
+                f"{_report.format_q(units, np.atleast_1d(bad))}) cannot be reached; "
                 f"valid range: {rng}")
         return poses, cache
 

@@ -169,6 +169,11 @@ def format_q(units, q, names=None) -> str:
     return ", ".join(out)
 
 
+def _q_text(unit: str, value: float, fmt: str) -> str:
+    """``"12.3°"`` for an angle (rad), ``"0.25 m"`` for a slide (m)."""
+    return f"{q_shown(unit, value):{fmt}}" + ("°" if unit == "rad" else " m")
+
+
 def check_tolerance(tolerance) -> float:
     """``tolerance`` as a float with ``0 < tolerance < 1``, or a TypeError/ValueError naming it.
 
@@ -226,12 +231,12 @@ def _configurations(design, q, n, seed) -> np.ndarray:
                              f"that the energy is constant, got {distinct}")
     extent = np.ptp(q, axis=0)
     reach = extent if (what == "n" and n == 1000 and seed == 0) else reachable_extent(design)
-    for name, span, full in zip(design.q_names, extent, reach):
+    for name, unit, span, full in zip(design.q_names, q_units(design), extent, reach):
         if span < MIN_COVERAGE * full:
             raise ValueError(
                 f"{what} must give configurations spanning at least {MIN_COVERAGE:g} of each "
-                f"coordinate's reachable range: {name} spans {np.degrees(span):.3g}° of "
-                f"{np.degrees(full):.4g}°" + (" (sample more configurations)" if what == "n" else ""))
+                f"coordinate's reachable range: {name} spans {_q_text(unit, span, '.3g')} of "
+                f"{_q_text(unit, full, '.4g')}" + (" (sample more configurations)" if what == "n" else ""))
     return q
 
 
