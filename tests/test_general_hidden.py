@@ -38,9 +38,29 @@ def test_a_hidden_catalog_solution_is_found_again(name):
     solve(name)
 
 
+def test_the_lifted_relaxation_holds_the_hidden_solution():
+    """The lifted columns (k, k p_a, k p_b, k p_a p_b^T) at the catalog's springs make the energy constant:
+    the relaxation is feasible, so "impossible" can never be said here, and the search has a point to reach."""
+    from balancelab.methods.general import balancer, bilinear
+    from balancelab.methods.general.problem import columns
+
+    design = bl.catalog()["lustig_case3"]()
+    bare, cands = hidden("lustig_case3")
+    blocks = balancer._blocks(bare, cands, [], ((-5.0, 5.0), (-5.0, 5.0)))
+    bilinear._lift(blocks, blocks)
+    p = columns(bare, blocks, bare.sample(200, seed=0))
+    x = np.zeros(p.nvar)
+    for b, s in zip(blocks, design.springs):
+        pa, pb = np.asarray(s.a[1]), np.asarray(s.b[1])
+        x[b.cols] = [s.k, *(s.k * pa), *(s.k * pb), *(s.k * np.outer(pa, pb)).ravel()]
+    assert np.all(x[[b.cols[0] for b in blocks]] > 0)
+    assert np.ptp(p.A @ x + p.v) <= 1e-12 * np.ptp(p.v)
+
+
 @pytest.mark.xfail(strict=True, raises=bl.InfeasibleDesign,
-                   reason="known defect (H19c): the lifted relaxation of Lustig's case 3 (a spring between two "
-                          "moving links) reports 'needs a negative rate' although the catalog's rates are positive, "
-                          "and no start of the alternating search reaches it: the verdict is not_found")
+                   reason="known defect (H19c): no start of the alternating search reaches Lustig's case 3 (a spring "
+                          "between two moving links) although its lifted relaxation holds the solution (test above); "
+                          "the verdict is not_found, and its message quotes the relaxation as 'needs a negative rate' "
+                          "because verdicts.infeasible is called on the lifted problem without solving it first")
 def test_lustig_case3_hidden_is_found_again():
     solve("lustig_case3")
