@@ -495,10 +495,10 @@ class Design:
         *Balanced* means: over the configurations, ``max V - min V <= tolerance * L``, where
         ``L`` (``load_scale``) is the energy the loads exchange: the sum of the spreads
         ``max - min`` of the loads' energies (loads acting at the same point added up first).
-        Springs never enter ``L``: springs that cancel each other cannot make an unbalanced
-        design look balanced. When the loads exchange no energy (spring-loaded mechanisms;
-        below 1e-12 of ``scale``) the springs are the load: ``L = scale``, the sum of the spreads
-        of every element's own energy (see :class:`BalanceReport`). At least 10 distinct
+        Springs never enter ``L``, and loads and springs whose energies sum to a constant (on any
+        bodies: ``F, F, -F`` on a parallelogram) are left out first, so they cannot make an unbalanced
+        design look balanced. When the loads exchange no energy the springs are the load (see
+        :func:`~balancelab.core.report.load_scale`, :class:`BalanceReport`). At least 10 distinct
         configurations, spanning a quarter of each coordinate's reachable range, are needed.
 
         Parameters
