@@ -275,11 +275,11 @@ class Design:
             (poses, ok), cache = self.kinematics.poses(qa), {}
         if not np.all(ok):
             bad = qa[~ok][0] if qa.ndim > 1 else qa
-            rng = ", ".join(f"{n} in [{np.degrees(lo):.2f}°, {np.degrees(hi):.2f}°]"
-                            for n, (lo, hi) in zip(self.q_names, self.q_range))
+            units = _report.q_units(self)  # degrees for angles, metres for slides
+            rng = ", ".join(f"{n} in [{_report.format_q((u, u), r)}]" for n, u, r in zip(self.q_names, units, self.q_range))
             raise UnreachableConfiguration(
-                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} rad "
-                f"({np.round(np.degrees(np.atleast_1d(bad)), 3).tolist()}°) cannot be reached; "
+                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} (rad or m: "
+                f"{_report.format_q(units, np.atleast_1d(bad))}) cannot be reached; "
                 f"valid range: {rng}")
         return poses, cache
 
@@ -492,10 +492,10 @@ class Design:
         *Balanced* means: over the configurations, ``max V - min V <= tolerance * L``, where
         ``L`` (``load_scale``) is the energy the loads exchange: the sum of the spreads
         ``max - min`` of the loads' energies (loads acting at the same point added up first).
-        Springs never enter ``L``: springs that cancel each other cannot make an unbalanced
-        design look balanced. When the loads exchange no energy (spring-loaded mechanisms;
-        below 1e-12 of ``scale``) the springs are the load: ``L = scale``, the sum of the spreads
-        of every element's own energy (see :class:`BalanceReport`). At least 10 distinct
+        Springs never enter ``L``, and loads and springs whose energies sum to a constant (on any
+        bodies: ``F, F, -F`` on a parallelogram) are left out first, so they cannot make an unbalanced
+        design look balanced. When the loads exchange no energy the springs are the load (see
+        :func:`~balancelab.core.report.load_scale`, :class:`BalanceReport`). At least 10 distinct
         configurations, spanning a quarter of each coordinate's reachable range, are needed.
 
         Parameters

@@ -24,6 +24,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .cancel import EXACT, null_subset
 from .validation import positive_int
 
 __all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
@@ -90,6 +91,9 @@ class BalanceReport:
         ``(max V - min V) / load_scale``: the number the verdict compares with ``tolerance``.
     q_units : tuple of str
         Unit of each coordinate (``"rad"`` or ``"m"``), for printing ``worst_q``.
+    cancelled : float
+        Sum of the spreads (J) of the elements left out of ``load_scale`` because their energies
+        sum to a constant (see :func:`load_scale`); 0 when none are.
 
     Examples
     --------
@@ -110,15 +114,18 @@ class BalanceReport:
     load_scale: float = math.nan
     load_variation: float = math.nan
     q_units: tuple = ()
+    cancelled: float = 0.0
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
         units = self.q_units or ("rad",) * len(np.atleast_1d(self.worst_q))
         q = format_q(units, self.worst_q)
         per = " or ".join(sorted(set(units), reverse=True))
+        left_out = (f"; elements that cancel each other, {self.cancelled:.4g} J, left out"
+                    if self.cancelled > 0 else "")
         return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
-                f"({self.load_scale:.4g} J) over {self.n} configurations; "
+                f"({self.load_scale:.4g} J{left_out}) over {self.n} configurations; "
                 f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
 
@@ -160,6 +167,11 @@ def format_q(units, q, names=None) -> str:
         text = f"{np.degrees(v):.1f}°" if unit == "rad" else f"{v:.4g} m"
         out.append(f"{names[i]} = {text}" if names else text)
     return ", ".join(out)
+
+
+def _q_text(unit: str, value: float, fmt: str) -> str:
+    """``"12.3°"`` for an angle (rad), ``"0.25 m"`` for a slide (m)."""
+    return f"{q_shown(unit, value):{fmt}}" + ("°" if unit == "rad" else " m")
 
 
 def check_tolerance(tolerance) -> float:
@@ -219,16 +231,17 @@ def _configurations(design, q, n, seed) -> np.ndarray:
                              f"that the energy is constant, got {distinct}")
     extent = np.ptp(q, axis=0)
     reach = extent if (what == "n" and n == 1000 and seed == 0) else reachable_extent(design)
-    for name, span, full in zip(design.q_names, extent, reach):
+    for name, unit, span, full in zip(design.q_names, q_units(design), extent, reach):
         if span < MIN_COVERAGE * full:
             raise ValueError(
                 f"{what} must give configurations spanning at least {MIN_COVERAGE:g} of each "
-                f"coordinate's reachable range: {name} spans {np.degrees(span):.3g}° of "
-                f"{np.degrees(full):.4g}°" + (" (sample more configurations)" if what == "n" else ""))
+                f"coordinate's reachable range: {name} spans {_q_text(unit, span, '.3g')} of "
+                f"{_q_text(unit, full, '.4g')}" + (" (sample more configurations)" if what == "n" else ""))
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0) -> float:
+def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0,
+               spring_energies: np.ndarray | None = None, tolerance: float = BALANCE_TOLERANCE) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
     Loads acting at the same point (the same world position in every configuration,
@@ -238,12 +251,16 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
     cancel each other cannot inflate it.
 
     Loads that form a *set* of zero resultant force and zero moment on one body (three forces, say)
-    do no work in any motion: they are left out first (:func:`_null_sets`). Sets that cancel only
-    through the kinematics (``F, F, -2F`` on three bodies of a parallelogram) cannot be told from a
-    counterweight balancing a mass and still count. A design whose loads exchange no energy
-    (a spring-loaded mechanism, or loads that only stand still; ``L`` below ``roundoff`` and
-    below ``1e-12`` of the loads' largest energy) has its springs as the load: the scale is then ``scale``, the sum
-    of the spreads of every element's energy.
+    do no work in any motion: they are left out first (:func:`_null_sets`). Then, with the springs'
+    energies given, the largest part of the design whose elements' energies sum to a constant
+    (:func:`balancelab.core.cancel.null_subset`, to ``min(tolerance, 1e-9)``; loads ``F, F, -F`` on
+    three bodies of a parallelogram, or stiff springs pulling against each other) is left out too,
+    whatever bodies it acts on: it exchanges no energy with the rest, so it cannot make the rest look
+    balanced. When what is left sums to a constant as well (the design is made of balanced parts) the
+    yardstick is the loads' sum above. A design whose loads exchange no energy (a spring-loaded
+    mechanism, or loads that only stand still; ``L`` below ``roundoff`` and below ``1e-12`` of the
+    loads' largest energy) has its springs as the load: the spreads of the springs left over, or
+    ``scale``, the sum of the spreads of every element's own energy, when they all cancel.
 
     Parameters
     ----------
@@ -256,6 +273,10 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
         Sum of the spreads of every load's and spring's energy (J).
     roundoff : float
         The round-off of the summed energy (J), see :data:`ROUND_OFF_ALLOWANCE`.
+    spring_energies : numpy.ndarray, shape (m, n_springs), optional
+        Energy of each spring (J); without it no set cancelling across bodies is left out.
+    tolerance : float
+        The verdict's tolerance; sets cancelling to ``min(tolerance, 1e-9)`` are left out.
 
     Returns
     -------
@@ -271,6 +292,11 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
     >>> bool(abs(load_scale(d, q, vl, s) - s) < 1e-9 * s)  # counterweights: every load counts
     True
     """
+    return _yardstick(design, q, load_energies, scale, roundoff, spring_energies, tolerance)[0]
+
+
+def _yardstick(design, q, load_energies, scale, roundoff=0.0, spring_energies=None, tolerance=BALANCE_TOLERANCE):
+    """``(load_scale, weight)`` (J): the yardstick, and the sum of the spreads of the null set left out."""
     null = _null_sets(design.loads)
     loads = [ld for i, ld in enumerate(design.loads) if i not in null]
     load_energies = load_energies[:, [i for i in range(len(design.loads)) if i not in null]]
@@ -284,10 +310,36 @@ def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: flo
                 if group[j] == j and np.max(np.abs(pts[:, i] - pts[:, j])) <= 1e-9 * size:
                     group[i] = j
                     break
-        sums = [load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1) for g in sorted(set(group))]
-        total = sum(float(np.ptp(e)) for e in _cancel(sums))
-    still = _ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0)
-    return total if total > max(still, roundoff) else scale
+        sums = _cancel([load_energies[:, [i for i, gi in enumerate(group) if gi == g]].sum(-1)
+                        for g in sorted(set(group))])
+        total = sum(float(np.ptp(e)) for e in sums)
+    else:
+        sums = []
+    still = max(_ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0), roundoff)
+    if spring_energies is not None:
+        left = _left_over(sums, np.asarray(spring_energies, dtype=float), min(tolerance, EXACT))
+        if left is not None:
+            loads_left, springs_left, weight = left
+            return (loads_left if loads_left > still else springs_left if springs_left > roundoff else scale), weight
+    return (total if total > still else scale), 0.0
+
+
+def _left_over(load_sums: list, spring_energies: np.ndarray, eta: float):
+    """``(loads' spread, springs' spread, null set's spread)`` (J) of what is left of the design once its largest null set
+    is taken out, or None when nothing is taken out or what is left is null too (the design is then
+    made of balanced parts, and the loads' sum is the yardstick)."""
+    m = len(spring_energies)
+    E = np.column_stack(list(load_sums) + [spring_energies]) if load_sums else spring_energies
+    E = E.reshape(m, -1)
+    null = null_subset(E, eta)
+    if not null.any() or null.sum() == int((np.ptp(E, axis=0) > 0).sum()):
+        return None  # nothing cancels, or the whole design does
+    rest = E[:, ~null]
+    spread = np.ptp(rest, axis=0)
+    if np.ptp(rest.sum(-1)) <= eta * spread.sum() + 1e-14 * float(np.abs(rest).max(initial=0.0)):
+        return None
+    is_load = (np.arange(E.shape[1]) < len(load_sums))[~null]
+    return float(spread[is_load].sum()), float(spread[~is_load].sum()), float(np.ptp(E[:, null], axis=0).sum())
 
 
 def _null_sets(loads) -> set:
@@ -365,11 +417,13 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
     roundoff = ROUND_OFF_ALLOWANCE * float(summed)
-    yardstick = load_scale(design, q, vl, scale, roundoff)
+    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
+
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
                          balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
-                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design))
+                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design),
+                         cancelled=null_weight)

@@ -25,6 +25,7 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from ..core.design import Design
+from ..core.report import q_units
 from ..core.validation import positive_int
 from .drawing import Drawing, extent
 from .energy import EnergyView, energy_limits, q_symbol, report_summary
@@ -330,13 +331,19 @@ def configuration_label(design: Design, q) -> str:
     'θ = 40°'
     """
     q = np.asarray(q, dtype=float).reshape(-1)
-    return ", ".join(f"{q_symbol(design, i)} = {np.degrees(v):.0f}°" for i, v in enumerate(q))
+    return ", ".join(f"{q_symbol(design, i)} = {_shown(unit, v)}" for i, (unit, v) in enumerate(zip(q_units(design), q)))
+
+
+def _shown(unit: str, value: float) -> str:
+    """A coordinate for a label: an angle in whole degrees, a slide in whole millimetres."""
+    return f"{1000.0 * value:.0f} mm" if unit == "m" else f"{np.degrees(value):.0f}°"
 
 
 def _motion_description(design: Design, path: np.ndarray, energy) -> str:
     """What :func:`animate` shows: the design, the range it moves through, and its energy finding."""
-    lo, hi = np.degrees(path.min(axis=0)), np.degrees(path.max(axis=0))
-    moves = ", ".join(f"{q_symbol(design, i)} from {a:.0f}° to {b:.0f}°" for i, (a, b) in enumerate(zip(lo, hi)))
+    lo, hi = path.min(axis=0), path.max(axis=0)
+    moves = ", ".join(f"{q_symbol(design, i)} from {_shown(u, a)} to {_shown(u, b)}"
+                      for i, (u, a, b) in enumerate(zip(q_units(design), lo, hi)))
     text = f"{design.name} moving through {moves} in {len(path)} frames"
     if energy is not None:
         return f"{text}; {energy.description}"

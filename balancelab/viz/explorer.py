@@ -27,6 +27,7 @@ from typing import Callable, Mapping
 import numpy as np
 
 from ..core.design import Design
+from ..core.report import format_q, q_units
 from .drawing import Drawing, extent
 from .energy import EnergyView, report_summary
 from .style import FONT
@@ -248,7 +249,7 @@ class Explorer:
         ----------
         **changes
             Design parameters by name (their units) and configuration coordinates by
-            name (radians).
+            name (radians; metres for a slide).
 
         Returns
         -------
@@ -314,8 +315,8 @@ class Explorer:
             lo, hi = design.q_range[:, 0], design.q_range[:, 1]
             q = np.clip(q, lo, hi)
         if not bool(design.reachable(q)):
-            qdeg = ", ".join(f"{n} = {np.degrees(v):.1f}°" for n, v in zip(design.q_names, q))
-            self._fail(f"{self._where()}: the configuration {qdeg} cannot be reached by this "
+            where = format_q(q_units(design), q, design.q_names)
+            self._fail(f"{self._where()}: the configuration {where} cannot be reached by this "
                        "design (it does not assemble there); showing the last valid picture")
             return False
         full = False
@@ -458,11 +459,12 @@ class Explorer:
             self._sliders[name] = s
         self._q_sliders = {}
         if self.show_q:
-            for i, name in enumerate(self.q_names):
-                lo, hi = np.degrees(self.design.q_range[i])
-                s = w.FloatSlider(value=float(np.degrees(self.q[i])), min=float(lo), max=float(hi),
-                                  step=0.5, description=f"{name} (deg)", continuous_update=True,
-                                  readout_format=".1f", layout=layout, style=style)
+            for i, (name, unit) in enumerate(zip(self.q_names, q_units(self.design))):
+                suffix, factor, step, fmt, _ = widget_access.q_slider(unit)
+                lo, hi = factor * np.asarray(self.design.q_range[i])
+                s = w.FloatSlider(value=float(factor * self.q[i]), min=float(lo), max=float(hi),
+                                  step=step, description=f"{name} ({suffix})", continuous_update=True,
+                                  readout_format=fmt, layout=layout, style=style)
                 s.observe(self._on_q(i), names="value")
                 self._q_sliders[name] = s
         self._image = w.Image(value=self.png, format="png")
@@ -507,12 +509,16 @@ class Explorer:
             if self._syncing:
                 return
             q = self._requested_q()
-            q[i] = math.radians(float(change["new"]))
+            q[i] = float(change["new"]) / self._q_factor(i)
             self._q_request = q
             self.update()
             self._sync_sliders()
 
         return callback
+
+    def _q_factor(self, i: int) -> float:
+        """Slider value per unit of coordinate ``i``: degrees per radian, or millimetres per metre."""
+        return widget_access.q_slider(q_units(self.design)[i])[1]
 
     def _sync_sliders(self) -> None:
         """Keep the configuration sliders' ranges and values in step with the design."""
@@ -523,14 +529,14 @@ class Explorer:
             for name, s in self._sliders.items():
                 s.value = self.values[name]
             for i, (name, s) in enumerate(self._q_sliders.items()):
-                lo, hi = (float(v) for v in np.degrees(self.design.q_range[i]))
+                lo, hi = (float(v) for v in self._q_factor(i) * np.asarray(self.design.q_range[i]))
                 if (s.min, s.max) != (lo, hi):
                     if lo > s.max:
                         s.max, s.min = hi, lo
                     else:
                         s.min, s.max = lo, hi
                 if not self.message:
-                    s.value = float(np.degrees(self.q[i]))
+                    s.value = float(self._q_factor(i) * self.q[i])
         finally:
             self._syncing = False
 
@@ -558,7 +564,7 @@ def explore(factory, params: Mapping | None = None, q=True, *, fixed: Mapping | 
         for every slider; the initial value is the factory's default when it has one
         in range, else the middle of the range.
     q : bool or array_like
-        ``True``: sliders for the configuration (in degrees), starting from
+        ``True``: sliders for the configuration (degrees; a slide in mm), from
         :func:`~balancelab.viz.default_q`; an array: the same, starting there
         (rad); ``False``: no configuration sliders.
     fixed : mapping, optional

@@ -15,7 +15,27 @@ import uuid
 
 import numpy as np
 
-__all__ = ["label_widgets", "script", "script_output", "slider_descriptions"]
+from ..core.report import q_units
+
+__all__ = ["label_widgets", "script", "script_output", "slider_descriptions", "q_slider"]
+
+
+def q_slider(unit: str) -> tuple[str, float, float, str, str]:
+    """How a coordinate's slider shows it: ``(suffix, factor, step, readout format, unit in words)``.
+
+    An angle (``"rad"``) is shown in degrees, a slide (``"m"``) in millimetres; ``factor`` turns the
+    coordinate (rad or m) into the slider's value.
+
+    Examples
+    --------
+    >>> q_slider("rad")[:3], q_slider("m")[:3]
+    (('deg', 57.29577951308232, 0.5), ('mm', 1000.0, 1.0))
+    """
+    if unit == "m":
+        return "mm", 1000.0, 1.0, ".0f", "millimetres"
+    if unit == "rad":
+        return "deg", float(np.degrees(1.0)), 0.5, ".1f", "degrees"
+    raise ValueError(f"unit must be 'rad' or 'm', got {unit!r}")
 
 _A11Y_JS = """(function () {
   var spec = SPEC, tries = 0;
@@ -81,11 +101,12 @@ def slider_descriptions(explorer) -> dict:
                      f"{step:.4g}; the picture and the balance report below follow it")
     if explorer.show_q:
         words = design.kinematics.describe()
-        for i, name in enumerate(explorer.q_names):
-            lo, hi = np.degrees(design.q_range[i])
+        for i, (name, unit) in enumerate(zip(explorer.q_names, q_units(design))):
+            suffix, factor, step, fmt, spoken = q_slider(unit)
+            lo, hi = factor * np.asarray(design.q_range[i])
             what = f", {words[i]}," if words[i] else ""
-            out[f"{name} (deg)"] = (f"{name}{what} from {lo:.1f} to {hi:.1f} degrees in steps of 0.5; "
-                                    f"moves the mechanism along its energy curve")
+            out[f"{name} ({suffix})"] = (f"{name}{what} from {lo:{fmt}} to {hi:{fmt}} {spoken} in steps of "
+                                         f"{step:g}; moves the mechanism along its energy curve")
     return out
 
 
