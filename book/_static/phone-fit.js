@@ -29,9 +29,20 @@
     MathJax.startup.promise.then(function () {
       var shown = document.querySelectorAll('mjx-container[jax="CHTML"][display="true"]');
       if (!("ResizeObserver" in window)) { shown.forEach(fit); return; }
+      var widths = new WeakMap();
+      // only a change of width refits, and outside the observer's callback (no resize loop)
       var watch = new ResizeObserver(function (changes) {
-        changes.forEach(function (c) {
-          c.target.querySelectorAll(':scope > mjx-container[jax="CHTML"][display="true"]').forEach(fit);
+        var changed = changes.filter(function (c) {
+          var w = Math.round(c.contentRect.width);
+          if (widths.get(c.target) === w) { return false; }
+          widths.set(c.target, w);
+          return true;
+        });
+        if (!changed.length) { return; }
+        requestAnimationFrame(function () {
+          changed.forEach(function (c) {
+            c.target.querySelectorAll(':scope > mjx-container[jax="CHTML"][display="true"]').forEach(fit);
+          });
         });
       });
       var parents = new Set();
