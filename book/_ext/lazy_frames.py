@@ -32,7 +32,8 @@ LOADER = """
       var a = window["anim" + id], d = (window.blFrames || {})[id];
       if (!a || !d) { setTimeout(fill, 50); return; }
       d.index.forEach(function (k, i) { a.frames[i + 1].src = d.frames[k]; });
-      a.set_frame(a.current_frame);
+      // the picture of the frame shown now (not set_frame: the player's words stay as they are)
+      document.getElementById(a.img_id).src = a.frames[a.current_frame].src;
     }
     function load() {
       if (asked) { return; }
