@@ -3,16 +3,18 @@
 An animation of the course (``balancelab.viz.player``) embeds every frame in the page as a PNG
 data URI: 24 to 48 frames, 0.7 to 2 MB of a chapter's first visit. After the build, every
 player's script keeps its first frame (what the page shows, and what the printed course prints)
-and moves the others into ``_images/frames/<hash>.js``, one small script per animation, which a
-loader adds to the page when the player comes within a screen of the window (or the reader
-touches or focuses it). A frame that repeats an earlier one is stored once. A script tag rather
-than ``fetch`` keeps the site working when opened from the disk (``file://``).
+and writes the others as PNG files ``_images/frames/<hash>.png`` (binary: a quarter smaller than
+their base64 text), which a loader gives to the player when it comes within a screen of the
+window (or the reader touches or focuses it). A frame that repeats another (in the same or in
+another animation) is one file. Plain image addresses keep the site working when it is opened
+from the disk (``file://``).
 
-Layer: the book's build (Sphinx extension). Tested by tests/test_book.py (every animation
-advances when played) and measured by benchmarks/bench_book.py (first-visit weight).
+Layer: the book's build (Sphinx extension). Tested by tests/test_book.py (every animation's
+picture changes when played) and measured by benchmarks/bench_book.py (first-visit weight).
 """
 from __future__ import annotations
 
+import base64
 import hashlib
 import json
 import re
@@ -26,22 +28,16 @@ FOLDER = "_images/frames"
 
 LOADER = """
   for (var i = 1; i < frames.length; i++) { frames[i] = frames[0]; }
-  (function (id, src) {
+  (function (id, files) {
     var asked = false;
-    function fill() {
-      var a = window["anim" + id], d = (window.blFrames || {})[id];
-      if (!a || !d) { setTimeout(fill, 50); return; }
-      d.index.forEach(function (k, i) { a.frames[i + 1].src = d.frames[k]; });
-      // the picture of the frame shown now (not set_frame: the player's words stay as they are)
-      document.getElementById(a.img_id).src = a.frames[a.current_frame].src;
-    }
     function load() {
       if (asked) { return; }
+      var a = window["anim" + id];
+      if (!a) { setTimeout(load, 50); return; }
       asked = true;
-      var s = document.createElement("script");
-      s.src = src;
-      s.onload = fill;
-      document.head.appendChild(s);
+      files.forEach(function (f, i) { a.frames[i + 1].src = f; });
+      // the picture of the frame shown now (not set_frame: the player's words stay as they are)
+      document.getElementById(a.img_id).src = a.frames[a.current_frame].src;
     }
     var img = document.getElementById("_anim_img" + id);
     var box = (img && img.closest("div.animation")) || img;
@@ -50,21 +46,14 @@ LOADER = """
       if (seen.some(function (e) { return e.isIntersecting; })) { watcher.disconnect(); load(); }
     }, {rootMargin: "100%% 0px"}).observe(box);
     ["pointerdown", "focusin", "keydown"].forEach(function (kind) { box.addEventListener(kind, load, true); });
-  })(%(id)s, %(src)s);
+  })(%(id)s, %(files)s);
 """
 
 
-def _frames_script(anim_id: str, frames: list[str]) -> tuple[str, bytes]:
-    """The file name and text of one animation's frames after the first (repeats stored once)."""
-    unique, index = [], []
-    for data in frames:
-        if data not in unique:
-            unique.append(data)
-        index.append(unique.index(data))
-    payload = json.dumps({"frames": unique, "index": index}, separators=(",", ":"))
-    text = f"window.blFrames = window.blFrames || {{}};\nwindow.blFrames[{json.dumps(anim_id)}] = {payload};\n"
-    name = hashlib.sha1(text.encode()).hexdigest()[:16] + ".js"
-    return name, text.encode()
+def _frame_file(data_uri: str) -> tuple[str, bytes]:
+    """The file name (its content's hash) and the PNG bytes of a frame's data URI."""
+    png = base64.b64decode(data_uri.split(",", 1)[1])
+    return hashlib.sha1(png).hexdigest()[:16] + ".png", png
 
 
 def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
@@ -83,15 +72,16 @@ def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
 
     Examples
     --------
-    >>> page = ('<script>(function() { var img_id = "_anim_imgAB"; var frames = new Array(3);\\n'
-    ...         'frames[0] = "data:image/png;base64,AAA"\\nframes[1] = "data:image/png;base64,BBB"\\n'
-    ...         'frames[2] = "data:image/png;base64,CCC"\\nframes[3] = "data:image/png;base64,BBB"\\n'
+    >>> aaa, bbb, ccc = (base64.b64encode(t).decode() for t in (b"A", b"B", b"C"))
+    >>> page = ('<script>(function() { var img_id = "_anim_imgAB"; var frames = new Array(4);\\n'
+    ...         f'frames[0] = "data:image/png;base64,{aaa}"\\nframes[1] = "data:image/png;base64,{bbb}"\\n'
+    ...         f'frames[2] = "data:image/png;base64,{ccc}"\\nframes[3] = "data:image/png;base64,{bbb}"\\n'
     ...         '})()</script>')
     >>> new, files = lazy_page(page, "../")
-    >>> "BBB" in new, "AAA" in new, len(files)   # the first frame stays, the others move
-    (False, True, 1)
-    >>> b'"index":[0,1,0]' in next(iter(files.values()))   # BBB is stored once
-    True
+    >>> bbb in new, aaa in new, sorted(files.values())   # the first frame stays; B is one file
+    (False, True, [b'B', b'C'])
+    >>> new.count("../_images/frames/")   # the player's list of its frames 2 to 4
+    3
     """
     files: dict = {}
 
@@ -100,8 +90,11 @@ def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
         frames = [(int(f.group("i")), f.group("data").replace("\\\n", "")) for f in FRAME.finditer(text)]
         if len(frames) < 2 or [i for i, _ in frames] != list(range(len(frames))):
             return text
-        name, data = _frames_script(m.group("id"), [d for _, d in frames[1:]])
-        files[name] = data
+        names = []
+        for _, data in frames[1:]:
+            name, png = _frame_file(data)
+            files[name] = png
+            names.append(f"{prefix}{FOLDER}/{name}")
         first = True
 
         def keep_first(f: re.Match) -> str:
@@ -111,7 +104,7 @@ def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
             return out
 
         text = FRAME.sub(keep_first, text)
-        loader = LOADER % {"id": json.dumps(m.group("id")), "src": json.dumps(f"{prefix}{FOLDER}/{name}")}
+        loader = LOADER % {"id": json.dumps(m.group("id")), "files": json.dumps(names)}
         cut = text.rindex("})()")
         return text[:cut] + loader + text[cut:]
 
@@ -119,7 +112,7 @@ def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
 
 
 def lazy_site(outdir) -> int:
-    """Rewrite every page of a built site; return the number of animations changed."""
+    """Rewrite every page of a built site; return the number of frame files written."""
     root = Path(outdir)
     count = 0
     for page in root.rglob("*.html"):
