@@ -131,7 +131,22 @@ def lazy_site(outdir) -> int:
             (folder / name).write_bytes(data)
         page.write_text(new, encoding="utf-8")
         count += len(files)
+    _drop_unused(root)
     return count
+
+
+def _drop_unused(root: Path) -> None:
+    """Delete the frame files no page names (left by an earlier build in the same folder)."""
+    folder = root / FOLDER
+    if not folder.is_dir():
+        return
+    named = set()
+    for page in root.rglob("*.html"):
+        if page.relative_to(root).parts[0] not in ("vendor", "_static", "_sources"):
+            named |= set(re.findall(FOLDER + r"/([0-9a-f]+\.png)", page.read_text(encoding="utf-8", errors="replace")))
+    for path in folder.iterdir():
+        if path.name not in named:
+            path.unlink()
 
 
 def _finished(app, exception) -> None:
