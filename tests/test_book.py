@@ -538,6 +538,38 @@ async () => {
 """
 
 
+#: What is wider than the page's content box on a phone (a reader must swipe inside it to see all
+#: of it): every display formula, table, image, figure, animation and svg, at its full width
+#: (its scrollWidth when it scrolls), measured from its left edge against the right edge of the
+#: article's content box (a formula's drawn maths, its hidden MathML aside). Code blocks may scroll (their lines are kept short by
+#: tests/test_pages.py), so what sits in code is left out. Run after READER_CHECKS opened every
+#: solution and dropdown.
+WIDTH_CHECKS = """
+() => {
+  const article = document.querySelector("article.bd-article") || document.querySelector("main") || document.body;
+  const ar = article.getBoundingClientRect(), cs = getComputedStyle(article);
+  const right = ar.left + article.clientLeft + article.clientWidth - parseFloat(cs.paddingRight);
+  const wide = [];
+  const items = article.querySelectorAll("mjx-container, table, img, .bl-figure, div.animation, svg, iframe, video");
+  for (const e of items) {
+    if (e.closest("pre, .highlight, .cell_input, button, .anim-buttons") || e.parentElement.closest("mjx-container")) continue;
+    if (e.tagName === "svg" && e.getBoundingClientRect().width < 24) continue;
+    if (!e.getClientRects().length) continue;
+    // a formula is as wide as its drawn maths (its hidden MathML for screen readers aside)
+    const drawn = e.tagName === "MJX-CONTAINER" ? e.querySelector(":scope > mjx-math") : null;
+    const r = (drawn || e).getBoundingClientRect();
+    const over = r.left + Math.max(r.width, drawn ? 0 : e.scrollWidth || 0) - right;
+    if (over <= 1.5) continue;
+    const what = e.tagName === "MJX-CONTAINER" ? "formula " + (e.closest(".math, span, div") || e).textContent.slice(0, 50)
+      : e.tagName === "IMG" ? "img " + (e.alt || "").slice(0, 50)
+      : e.tagName.toLowerCase() + "." + String(e.className).split(" ")[0] + " " + e.textContent.trim().slice(0, 40);
+    wide.push(`${what}: ${over.toFixed(0)} px wider than the ${(right - ar.left).toFixed(0)} px column`);
+  }
+  return wide;
+}
+"""
+
+
 def _reader_problems(page, where: str) -> list[str]:
     res = page.evaluate(READER_CHECKS)
     problems = [f"{where}: out of reach: {c}" for c in res["cut"]]
@@ -684,19 +716,27 @@ def test_every_page_in_a_browser(site, server, browser, width):
             anim = page.locator("div.animation").nth(i)
             anim.scroll_into_view_if_needed()
             slider = anim.locator("input[type=range]")
+            frame = anim.locator("img").first
             seen = {slider.input_value()}
+            pictures = {frame.evaluate("e => e.src.slice(-64)")}
             anim.locator("button[title=Play]").click()
             for _ in range(12):  # sample the frame counter while it plays (loops may wrap around)
                 page.wait_for_timeout(70)
                 seen.add(slider.input_value())
+                pictures.add(frame.evaluate("e => e.src.slice(-64)"))
             anim.locator("button[title=Pause]").click()
             n_anim += 1
             if len(seen) < 2:
                 problems.append(f"{where}: animation {i} did not advance when played")
+            # the frames after the first arrive when the reader reaches the player (lazy_frames.py)
+            if len(pictures) < 2:
+                problems.append(f"{where}: animation {i} shows the same picture in every frame")
             if int(slider.get_attribute("max") or 0) < 2:
                 problems.append(f"{where}: animation {i} has fewer than 3 frames")
         page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True)
         problems += _reader_problems(page, where)
+        if width == 390:
+            problems += [f"{where}: wider than the column: {w}" for w in page.evaluate(WIDTH_CHECKS)]
         problems += [f"{where}: console error: {c}" for c in console]
         problems += [f"{where}: failed request: {b}" for b in bad]
         page.close()

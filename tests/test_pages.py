@@ -44,6 +44,30 @@ def test_code_cells_are_found_with_their_visibility():
     assert code_cells(text) == [(True, "x = 1\n"), (False, "assert x == 1\n"), (False, "print(x)\n")]
 
 
+#: The longest line of code a page shows (the chapters are formatted to 72 columns; 88 is the limit
+#: past which a code block scrolls sideways even in a laptop's column).
+CODE_COLUMNS = 88
+FENCE = re.compile(r"^```(?:python|bash|ipython3?|sh|text|console)\n(.*?)^```", re.MULTILINE | re.DOTALL)
+
+
+@pytest.mark.parametrize("page", PAGES + ["labs"])
+def test_visible_code_lines_fit_the_column(page):
+    """Every line of code a reader sees (visible cells and plain code blocks) is at most 88 columns."""
+    text = (ROOT / "book" / f"{page}.md").read_text()
+    shown = [code for visible, code in code_cells(text) if visible]
+    shown += [m.group(1) for m in FENCE.finditer(text)]
+    long = [line for code in shown for line in code.splitlines() if len(line) > CODE_COLUMNS]
+    assert not long, f"{page}: {len(long)} visible code lines over {CODE_COLUMNS} columns:\n" + "\n".join(long[:5])
+
+
+def test_the_line_check_sees_visible_cells_and_code_blocks_only():
+    long = "x = " + "1 + " * 30 + "1"
+    text = (f"```{{code-cell}} ipython3\n{long}\n```\n\n```{{code-cell}} ipython3\n:tags: [remove-cell]\n"
+            f"{long}\n```\n\n```python\n{long}\n```\n")
+    visible = [code for v, code in code_cells(text) if v] + [m.group(1) for m in FENCE.finditer(text)]
+    assert [len(c.strip()) > CODE_COLUMNS for c in visible] == [True, True]
+
+
 @pytest.mark.parametrize("page", PAGES)
 def test_no_visible_cell_asserts(page):
     cells = code_cells((ROOT / "book" / f"{page}.md").read_text())

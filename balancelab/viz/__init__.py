@@ -10,7 +10,8 @@ arcs), ``energy``
 :func:`family_plot`, :func:`cognates_plot`), ``animation`` (offline HTML animations),
 ``player`` (the page's accessible animation player), ``explorer`` (live ipywidgets
 explorers, imported on first use) and ``widget_access`` (the explorers' slider names,
-descriptions and live report for screen readers). Every figure and animation says what it
+descriptions and live report for screen readers), ``formula`` (long SymPy results set
+over lines that fit a phone's column). Every figure and animation says what it
 shows in words computed from the design (its alt text). No physics is
 computed here: geometry and energies come from the :class:`balancelab.Design` being
 drawn (and a spring's realization from its ``realization``), so a picture cannot
