@@ -4,7 +4,8 @@
  * column can be scrolled only by a reader who can focus it. The theme does this for code
  * blocks and cell outputs; here the same for the course's figures (.bl-figure), animation
  * players and MathJax's display formulas. Such a region gets tabindex=0 and a name that
- * says it scrolls, while it is wider than its box; it loses both when the window grows.
+ * says it scrolls, while it is wider than its box; it loses both when the window grows. Other
+ * formulas are not tab stops (MathJax's menu option inTabOrder is off in _config.yml).
  * Loaded on every page by book/_ext/accessibility.py.
  */
 (function () {
@@ -18,16 +19,19 @@
       var style = getComputedStyle(el);
       var scrolls = /(auto|scroll)/.test(style.overflowX + style.overflowY) &&
         (el.scrollWidth > el.clientWidth + 1 || el.scrollHeight > el.clientHeight + 1);
-      if (scrolls && !el.hasAttribute("tabindex")) {
+      // MathJax gives every formula tabindex="-1" (kept out of the tab order, see _config.yml)
+      var focusable = el.hasAttribute("tabindex") && el.getAttribute("tabindex") !== "-1";
+      if (scrolls && !focusable) {
+        el.dataset.blScrollFocus = el.getAttribute("tabindex") || "none";
         el.setAttribute("tabindex", "0");
-        el.dataset.blScrollFocus = "1";
         if (!el.hasAttribute("role")) {
           el.setAttribute("role", "group");
           el.setAttribute("aria-label", NAME);
           el.dataset.blScrollName = "1";
         }
       } else if (!scrolls && el.dataset.blScrollFocus) {
-        el.removeAttribute("tabindex");
+        if (el.dataset.blScrollFocus === "none") { el.removeAttribute("tabindex"); }
+        else { el.setAttribute("tabindex", el.dataset.blScrollFocus); }
         delete el.dataset.blScrollFocus;
         if (el.dataset.blScrollName) {
           el.removeAttribute("role");
