@@ -3,15 +3,16 @@
  * scrollable-region-focusable): a figure, an animation or a display formula wider than the
  * column can be scrolled only by a reader who can focus it. The theme does this for code
  * blocks and cell outputs; here the same for the course's figures (.bl-figure), animation
- * players and MathJax's display formulas. Such a region gets tabindex=0 and a name that
- * says it scrolls, while it is wider than its box; it loses both when the window grows. Other
- * formulas are not tab stops (MathJax's menu option inTabOrder is off in _config.yml).
+ * players and MathJax's formulas (an inline formula longer than a phone's line scrolls too).
+ * Such a region gets tabindex=0 and a name that says it scrolls, while it is wider than its
+ * box; it loses both when the window grows. Other formulas are not tab stops (MathJax's menu
+ * option inTabOrder is off in _config.yml).
  * Loaded on every page by book/_ext/accessibility.py.
  */
 (function () {
   "use strict";
 
-  var SELECTOR = ".bl-figure, div.animation, mjx-container[display='true'], .math-wrapper";
+  var SELECTOR = ".bl-figure, div.animation, mjx-container[display='true'], .math-wrapper, .bd-content span.math";
   var NAME = "scrollable content: use the arrow keys to see all of it";
 
   function update() {
