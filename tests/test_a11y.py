@@ -368,3 +368,50 @@ def test_each_panel_of_a_figure_has_its_own_alt_text(site):
             for j, other in enumerate(alts):
                 if i != j:
                     assert body not in other, f"{where}: panel {j + 1} repeats panel {i + 1}'s text"
+
+
+# ------------------------------------------------------------------- text on gradients
+HERO_COLOURS = """() => {
+  const rgb = s => (s.match(/rgba?\\([^)]*\\)/g) || []).map(c => c.match(/[\\d.]+/g).map(Number));
+  const hero = document.querySelector(".bl-hero");
+  const page = rgb(getComputedStyle(document.body).backgroundColor)[0];
+  const texts = Array.from(hero.querySelectorAll(".bl-hero-kicker, .bl-hero-promise, .bl-button")).map(e => {
+    const s = getComputedStyle(e);
+    return {what: e.className + ": " + e.textContent.trim().slice(0, 30), colour: rgb(s.color)[0],
+            own: rgb(s.backgroundColor)[0]};
+  });
+  return {page, stops: rgb(getComputedStyle(hero).backgroundImage), texts};
+}"""
+
+
+def _over(colour, under):
+    """``colour`` (r, g, b[, alpha]) drawn over the opaque ``under``."""
+    a = colour[3] if len(colour) > 3 else 1.0
+    return [a * c + (1 - a) * u for c, u in zip(colour[:3], under[:3])]
+
+
+def _contrast(fg, bg) -> float:
+    def lum(c):
+        c = [x / 255 for x in c[:3]]
+        c = [x / 12.92 if x <= 0.03928 else ((x + 0.055) / 1.055) ** 2.4 for x in c]
+        return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+    hi, lo = sorted((lum(fg), lum(bg)), reverse=True)
+    return (hi + 0.05) / (lo + 0.05)
+
+
+@pytest.mark.parametrize("mode", ["light", "dark"])
+def test_landing_page_text_on_its_gradient_contrasts(site, server, browser, mode):
+    """axe-core cannot tell the contrast of text on a gradient: every stop is checked here."""
+    ctx = colour_context(browser, mode, viewport={"width": 1280, "height": 900})
+    page = ctx.new_page()
+    page.goto(urljoin(server, "book/intro.html"), wait_until="load")
+    assert page.evaluate("() => document.documentElement.dataset.theme") == mode
+    c = page.evaluate(HERO_COLOURS)
+    assert len(c["stops"]) >= 2 and len(c["texts"]) >= 4, c
+    for t in c["texts"]:
+        own = t["own"] if t["own"] and (len(t["own"]) < 4 or t["own"][3] > 0) else None
+        grounds = [_over(own, c["page"])] if own else [_over(s, c["page"]) for s in c["stops"]]
+        for g in grounds:
+            ratio = _contrast(_over(t["colour"], g), g)
+            assert ratio >= 4.5, f"{t['what']} in {mode} mode: {ratio:.2f}:1 on {g}"
+    ctx.close()
