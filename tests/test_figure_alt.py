@@ -92,12 +92,57 @@ def test_chapters_give_side_by_side_figures_one_text_per_panel():
     for page in sorted((ROOT / "book").glob("ch*.md")):
         for meta_text, code in CELL.findall(page.read_text(encoding="utf-8")):
             meta = yaml.safe_load(meta_text) or {}
-            alt = ((meta.get("mystnb") or {}).get("image") or {}).get("alt")
+            alt = meta.get("panel_alts")
             row = re.search(r"plt\.subplots\(1, (\d+)", code)
-            if alt is None or row is None:
+            if row is None or not (alt or (meta.get("mystnb") or {}).get("image")):
                 continue
+            # myst-nb checks that image: alt: is one string; several panels take panel_alts
+            assert "alt" not in ((meta.get("mystnb") or {}).get("image") or {}), page.name
             n = int(row.group(1))
             assert isinstance(alt, list) and len(alt) == n, f"{page.name}: {alt!r} for {n} panels"
             assert len(set(alt)) == n, f"{page.name}: panels share a text: {alt}"
             checked += 1
     assert checked >= 15
+
+
+@pytest.mark.slow
+def test_a_book_gives_each_panel_its_text_and_refuses_one_text_for_two_panels(tmp_path):
+    from conftest import build_mini_book
+
+    r = build_mini_book(tmp_path, local_extensions={"figure_alt": str(ROOT / "book" / "_ext")}, body="""
+        # Page
+
+        ```{code-cell} ipython3
+        from IPython.display import display
+        from matplotlib.figure import Figure
+        import balancelab.viz.style as style
+        _ = style.install()
+        ```
+
+        ```{code-cell} ipython3
+        ---
+        panel_alts:
+          - "A link and its spring."
+          - "Its energies against the link angle."
+        ---
+        fig = Figure(figsize=(6, 2), layout="constrained"); a, b = fig.subplots(1, 2)
+        _ = a.set_title("link"), b.set_title("energy")
+        display(fig)
+        ```
+
+        ```{code-cell} ipython3
+        ---
+        mystnb:
+          image:
+            alt: Left, a link; right, its energy.
+        ---
+        fig = Figure(figsize=(6, 2), layout="constrained"); a, b = fig.subplots(1, 2)
+        _ = a.set_title("link"), b.set_title("energy")
+        display(fig)
+        ```
+        """)
+    out = r.stdout + r.stderr
+    assert r.returncode != 0, out
+    assert "figure alt text: alt: the figure has 2 panels but 1 alt text was given" in out, out
+    page = (tmp_path / "_build" / "html" / "page.html").read_text(encoding="utf-8")
+    assert alts(page)[:2] == ["Panel 1 of 2: A link and its spring.", "Panel 2 of 2: Its energies against the link angle."]

@@ -4,12 +4,12 @@ In the book's kernels ``balancelab.viz.style.install`` shows every matplotlib fi
 one image per column of panels (so that they stack on a phone), with alt text made from the
 panels' titles and axis labels. A page describes its figure better: when the cell sets
 ``mystnb: image: alt:``, this extension gives that text to the figure's image. A figure of
-several panels needs one text per panel, a list in the order of the panels::
+several panels needs one text per panel instead, the cell's ``panel_alts``, a list in the order
+of the panels (a key of its own: myst-nb wants ``image: alt:`` to be a single string)::
 
-    image:
-      alt:
-        - A link pivoted at A with a spring from B above A to C on the link.
-        - Three energy curves against the link angle; the total is flat.
+    panel_alts:
+      - A link pivoted at A with a spring from B above A to C on the link.
+      - Three energy curves against the link angle; the total is flat.
 
 Each panel's image then reads "Panel i of n: " and its own text, followed by what the panel
 computed it shows, when it did (an energy plot: "Energy plot: the total energy is flat at
@@ -98,8 +98,12 @@ def _doctree_read(app, doctree: nodes.document) -> None:
     for cell in doctree.findall(nodes.container):
         if cell.get("nb_element") != "cell_code":
             continue
-        alt = (((cell.get("cell_metadata") or {}).get("mystnb") or {}).get("image") or {}).get("alt")
+        meta = cell.get("cell_metadata") or {}
+        alt = meta.get("panel_alts") or ((meta.get("mystnb") or {}).get("image") or {}).get("alt")
         if not alt:
+            continue
+        if not isinstance(alt, str) and not (isinstance(alt, list) and all(isinstance(a, str) for a in alt)):
+            logger.warning(f"figure alt text: panel_alts must be a list of strings, not {alt!r}", location=cell)
             continue
         for raw in list(cell.findall(nodes.raw)):
             text = raw.astext()
