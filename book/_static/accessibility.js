@@ -18,8 +18,10 @@
   function update() {
     document.querySelectorAll(SELECTOR).forEach(function (el) {
       var style = getComputedStyle(el);
-      var scrolls = /(auto|scroll)/.test(style.overflowX + style.overflowY) &&
-        (el.scrollWidth > el.clientWidth + 1 || el.scrollHeight > el.clientHeight + 1);
+      // an axis scrolls only where its overflow is auto or scroll (a formula's overflow-y is
+      // hidden: its glyphs may stick out by a pixel or two, which no one can scroll to)
+      var scrolls = (/(auto|scroll)/.test(style.overflowX) && el.scrollWidth > el.clientWidth + 1) ||
+        (/(auto|scroll)/.test(style.overflowY) && el.scrollHeight > el.clientHeight + 1);
       // MathJax gives every formula tabindex="-1" (kept out of the tab order, see _config.yml)
       var focusable = el.hasAttribute("tabindex") && el.getAttribute("tabindex") !== "-1";
       if (scrolls && !focusable) {
