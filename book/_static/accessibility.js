@@ -54,11 +54,20 @@
   window.addEventListener("resize", later);
   window.addEventListener("load", update);
   if (document.readyState !== "loading") { update(); } else { document.addEventListener("DOMContentLoaded", update); }
-  // MathJax typesets after load: look again once it has finished
+  // MathJax typesets after load, and its web fonts arrive later still and change the formulas'
+  // widths: look again whenever a region's size changes
+  var watch = window.ResizeObserver ? new ResizeObserver(later) : null;
+  function observe() {
+    update();
+    if (watch) {
+      document.querySelectorAll(SELECTOR + ", mjx-container > mjx-math").forEach(function (el) { watch.observe(el); });
+    }
+    if (document.fonts && document.fonts.ready) { document.fonts.ready.then(later); }
+  }
   var tries = 0;
   (function afterMath() {
     if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
-      MathJax.startup.promise.then(update);
+      MathJax.startup.promise.then(observe);
     } else if (++tries < 50) {
       setTimeout(afterMath, 100);
     }
