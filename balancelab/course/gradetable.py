@@ -12,31 +12,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import check as _check
+from .intake import identity
+from .sanitize import excerpt
 
-__all__ = ["GradeRow", "write_csv", "read_csv", "merge_csv", "summary", "excerpt", "cell", "RowWriter"]
-
-
-def excerpt(text, n: int = 40) -> str:
-    """Student text as it may appear in a row: printable characters only, at most ``n`` of them.
-
-    Parameters
-    ----------
-    text : object
-        Anything a notebook chose (an exception name, a lab name, a verdict echoing an answer).
-    n : int
-        Longest excerpt.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> excerpt("line one\\nline two " + "x" * 80, 20)
-    'line one line two x…'
-    """
-    s = " ".join("".join(c if c.isprintable() else " " for c in str(text)[:4 * n + 100]).split())
-    return s if len(s) <= n else s[:n - 1] + "…"
+__all__ = ["GradeRow", "write_csv", "read_csv", "merge_csv", "summary", "cell", "RowWriter"]
 
 
 _FORMULA = ("=", "+", "-", "@", "\t", "\r")
@@ -330,8 +309,6 @@ def merge_csv(paths: list[str | Path], out: str | Path, roster: dict[str, str] |
 def _duplicates_across(rows: list[GradeRow], table: dict[str, int], roster: dict | None) -> list[GradeRow]:
     """``rows`` with a ``DUPLICATE ID`` note on those whose id and lab another table's row shares."""
     from dataclasses import replace
-
-    from .intake import identity
 
     groups: dict[tuple[str, str], list[GradeRow]] = {}
     for r in rows:

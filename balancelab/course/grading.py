@@ -52,7 +52,8 @@ from pathlib import Path
 
 from . import check as _check
 from .caps import Caps, Cgroup
-from .gradetable import GradeRow, RowWriter, excerpt, merge_csv, read_csv, summary, write_csv
+from .gradetable import GradeRow, RowWriter, merge_csv, read_csv, summary, write_csv
+from .sanitize import excerpt
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
                      resolve_lab)
 from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, sandbox_available

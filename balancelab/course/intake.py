@@ -17,7 +17,7 @@ import re
 import stat
 from pathlib import Path
 
-from .gradetable import excerpt
+from .sanitize import excerpt
 
 __all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "read_roster", "identity",
            "resolve_lab", "cheat_notes"]

@@ -122,7 +122,7 @@ _set_up()'''
 #: The grader's own modules (in ``balancelab/course``): no notebook imports them, so the student
 #: hand-out's package leaves them out (it can check answers, not grade).
 GRADER_MODULES = ("grading.py", "runner.py", "sandbox.py", "workers.py", "caps.py", "intake.py", "leaks.py",
-                  "gradetable.py")
+                  "gradetable.py", "sanitize.py")
 
 
 def course_repository(config: str | Path = _ROOT / "_config.yml") -> tuple[str, str]:

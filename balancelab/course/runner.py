@@ -37,7 +37,7 @@ from pathlib import Path
 
 from .caps import Caps, Cgroup
 from .check.data import encode_answer
-from .gradetable import excerpt
+from .sanitize import excerpt
 from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
 
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
