@@ -109,9 +109,12 @@ def test_self_cancelling_springs_do_not_hide_an_imbalance(pair, tolerance):
     r = bad.balance_report(tolerance=tolerance)
     assert not r.balanced, r
     assert r.load_variation > 0.05 and r.load_scale == pytest.approx(2 * G * 0.5 * 2, rel=1e-3)
-    assert str(r).startswith("NOT balanced: energy varies by")
+    assert str(r).startswith("NOT balanced")
     good = pivot_lever(pair=pair).balance_report(tolerance=tolerance)
-    assert good.balanced and str(good).startswith("balanced: energy varies by")
+    if good.resolvable:
+        assert good.balanced and str(good).startswith("balanced: energy varies by")
+    else:   # 1e10 N/m springs: their round-off exceeds 1e3 x 1e-9 of the loads' exchange
+        assert pair[0] >= 1e10 and str(good).startswith("NOT balanced (cannot be resolved")
 
 
 def test_opposite_loads_at_one_point_do_not_inflate_the_scale():
@@ -184,7 +187,10 @@ def test_random_spring_rate_imbalances_are_always_caught(name, which, size, sign
     bad = design.replace(springs=springs)
     if pair is not None:
         bad = _with_pair(bad, 10.0 ** pair[0], pair[1], pair[2])
-        assert _with_pair(design, 10.0 ** pair[0], pair[1], pair[2]).balance_report(n=200).balanced
+        exact = _with_pair(design, 10.0 ** pair[0], pair[1], pair[2]).balance_report(n=200)
+        # exact: balanced; with a pair so stiff that double precision cannot resolve 1e-9 of the
+        # loads' exchange, honestly "NOT balanced (cannot be resolved)", never a false verdict either way
+        assert exact.balanced or (not exact.resolvable and pair[0] > 6.0), exact
     assert not bad.balance_report(n=200).balanced
     assert not bad.balance_report(n=200, tolerance=1e-5).balanced
 

@@ -278,7 +278,8 @@ class Design:
             units = _report.q_units(self)  # degrees for angles, metres for slides
             rng = ", ".join(f"{n} in [{_report.format_q((u, u), r)}]" for n, u, r in zip(self.q_names, units, self.q_range))
             raise UnreachableConfiguration(
-                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} (rad or m: "
+                f"{self.name}: configuration q = {np.round(np.atleast_1d(bad), 6).tolist()} "
+                f"({' and '.join(sorted(set(units)))}: "
                 f"{_report.format_q(units, np.atleast_1d(bad))}) cannot be reached; "
                 f"valid range: {rng}")
         return poses, cache

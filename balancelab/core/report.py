@@ -27,7 +27,7 @@ import numpy as np
 from .cancel import EXACT, null_subset
 from .validation import positive_int
 
-__all__ = ["BALANCE_TOLERANCE", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
+__all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
            "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
@@ -48,6 +48,12 @@ _ROUND_OFF = 1e-12
 #: summed more exactly than this fraction of the energies summed, ``sum of the loads' spreads +
 #: sum of the springs' largest energies`` (J), both independent of the origin.
 ROUND_OFF_ALLOWANCE: float = 1e-14
+
+#: The round-off allowance may widen the verdict to at most this many times ``tolerance * L``: past
+#: that (energies some 1e14 times what the loads exchange: a far origin, an idle stiff spring, huge
+#: loads that cancel) double precision cannot resolve the balance, and the report says NOT balanced
+#: and why, never balanced.
+MAX_ROUND_OFF_RATIO: float = 1e3
 
 _EXTENTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
@@ -94,6 +100,10 @@ class BalanceReport:
     cancelled : float
         Sum of the spreads (J) of the elements left out of ``load_scale`` because their energies
         sum to a constant (see :func:`load_scale`); 0 when none are.
+    roundoff : float
+        The round-off allowance of the verdict (J), :data:`ROUND_OFF_ALLOWANCE` times the energies
+        summed. When it exceeds :data:`MAX_ROUND_OFF_RATIO` ``* tolerance * load_scale`` the
+        verdict cannot be resolved and is NOT balanced (:attr:`resolvable` is False).
 
     Examples
     --------
@@ -115,6 +125,13 @@ class BalanceReport:
     load_variation: float = math.nan
     q_units: tuple = ()
     cancelled: float = 0.0
+    roundoff: float = 0.0
+
+    @property
+    def resolvable(self) -> bool:
+        """Whether double precision can resolve the verdict: the round-off allowance (J) is at most
+        :data:`MAX_ROUND_OFF_RATIO` times ``tolerance * load_scale``."""
+        return not self.roundoff > MAX_ROUND_OFF_RATIO * self.tolerance * self.load_scale
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
@@ -123,7 +140,11 @@ class BalanceReport:
         per = " or ".join(sorted(set(units), reverse=True))
         left_out = (f"; elements that cancel each other, {self.cancelled:.4g} J, left out"
                     if self.cancelled > 0 else "")
-        return (f"{verdict}: energy varies by {self.variation:.2e} of its scale "
+        unresolved = ("" if self.resolvable else
+                      f" (cannot be resolved: the round-off of energies this large, {self.roundoff:.3g} J, "
+                      f"exceeds {MAX_ROUND_OFF_RATIO:g} x tolerance x the loads' exchange; move the origin "
+                      "near the mechanism, or remove elements that store energy without exchanging it)")
+        return (f"{verdict}{unresolved}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
                 f"({self.load_scale:.4g} J{left_out}) over {self.n} configurations; "
                 f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
@@ -315,7 +336,10 @@ def _yardstick(design, q, load_energies, scale, roundoff=0.0, spring_energies=No
         total = sum(float(np.ptp(e)) for e in sums)
     else:
         sums = []
-    still = max(_ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0), roundoff)
+    # the loads stand still when what they exchange is below their own round-off AND below the sum's
+    # (a real exchange drowned in the round-off of huge elements is not "still": the verdict is then
+    # unresolvable, see MAX_ROUND_OFF_RATIO, never judged against the springs instead)
+    still = min(_ROUND_OFF * (float(np.max(np.abs(load_energies))) if load_energies.size else 0.0), roundoff)
     if spring_energies is not None:
         left = _left_over(sums, np.asarray(spring_energies, dtype=float), min(tolerance, EXACT))
         if left is not None:
@@ -424,6 +448,7 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)), worst_q=q[worst].copy(),
-                         balanced=bool(spread <= tolerance * yardstick + roundoff), tolerance=tolerance, n=len(q),
-                         load_scale=yardstick, load_variation=spread / yardstick, q_units=q_units(design),
-                         cancelled=null_weight)
+                         balanced=bool(spread <= tolerance * yardstick + roundoff
+                                       and not roundoff > MAX_ROUND_OFF_RATIO * tolerance * yardstick),
+                         tolerance=tolerance, n=len(q), load_scale=yardstick, load_variation=spread / yardstick,
+                         q_units=q_units(design), cancelled=null_weight, roundoff=roundoff)
