@@ -577,8 +577,9 @@ def test_no_cell_of_the_table_is_a_formula_and_student_text_is_short(graded):
         for cell in record:
             assert not cell.startswith(("=", "+", "-", "@", "\t", "\r")), cell
     row = graded["rows"]["=1+2*3_lab2"]
-    assert row["student"] == "'=1+2*3_lab2" and row["2.1"] == "1"  # no id in that name: published numbers
-    assert "no student id" in row["notes"]
+    # no id in that name: the published numbers' answer scores 0 (attack A18: a renamed file got 5/5)
+    assert row["student"] == "'=1+2*3_lab2" and row["2.1"] == "0" and row["status"] == "unidentified"
+    assert "NO STUDENT ID" in row["notes"]
     long = graded["rows"]["long_lab2"]
     assert len(long["2.1 message"]) <= 202 and "A" * 50 not in long["2.1 message"]
     assert all(len(v) < 4000 for r in graded["rows"].values() for v in r.values())
@@ -694,7 +695,8 @@ def test_identity_comes_from_the_roster(tmp_path):
     malice = rows["malice_lab1"]
     assert malice["1.1"] == "0" and "declares STUDENT_ID 'alice' but is 'm77''s (roster)" in malice["notes"]
     nobody = rows["nobody_lab1"]
-    assert "no student id (not in the roster)" in nobody["notes"] and nobody["1.1"] == "1"
+    assert "NO STUDENT ID (not in the roster)" in nobody["notes"] and nobody["1.1"] == "0"
+    assert nobody["status"] == "unidentified"
 
 
 def test_no_lab_answer_in_a_docstring_of_the_package(tmp_path):
@@ -974,3 +976,31 @@ def test_duplicate_ids_across_shards_are_flagged_at_merge(tmp_path):
         notes = {r.student: r.notes for r in read_csv(out)}
         assert {s for s, n in notes.items() if n.startswith("DUPLICATE ID")} == flagged, notes
         assert "mallory/alice_lab2" in notes["alice_lab2"] and "alice_lab2" in notes["mallory/alice_lab2"]
+
+
+def test_a_renamed_file_gets_no_published_answers_and_no_control_characters_reach_the_csv(tmp_path):
+    """Outside-view attack A18: ``mallory_lab1 (1).ipynb`` (a browser's re-download) and
+    ``Mallory_Lab1.ipynb`` holding the published answers scored 5/5 with a note; file names with an
+    escape sequence or a line break reached the CSV raw. Now: status ``unidentified``, the personal
+    tasks 0, and the CSV holds printable text only, one record a line."""
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    sub, out = tmp_path / "sub", tmp_path / "grades.csv"
+    sub.mkdir()
+    names = ["mallory_lab1 (1)", "Mallory_Lab1", "x\x1b[2J\x1b[31mFAKE_lab1", "evil\nalice,lab1,graded_lab1"]
+    for name in names:
+        nbformat.write(submission_notebook("lab1", personal_r_c("")), sub / f"{name}.ipynb")
+    nbformat.write(submission_notebook("lab1", personal_r_c("carol")), sub / "carol_lab1.ipynb")
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
+                           "--jobs", "2", "--lab", "lab1"], capture_output=True, text=True, timeout=900, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    text = out.read_text(encoding="utf-8")
+    assert all(c.isprintable() or c in "\n\r" for c in text) and "\x1b" not in text
+    rows = list(csv.DictReader(out.open(encoding="utf-8")))
+    assert len(rows) == len(names) + 1                      # one record per submission, none forged
+    by_name = {r["student"]: r for r in rows}
+    assert by_name["carol_lab1"]["1.1"] == "1" and by_name["carol_lab1"]["status"] == "graded"
+    for r in rows:
+        if r["student"] != "carol_lab1":
+            assert r["status"] == "unidentified" and r["1.1"] == "0", r
+            assert "NO STUDENT ID" in r["notes"]

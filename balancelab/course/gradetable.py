@@ -22,7 +22,11 @@ _FORMULA = ("=", "+", "-", "@", "\t", "\r")
 
 
 def cell(value) -> str:
-    """A CSV cell that a spreadsheet shows as text: one that starts like a formula gets a ``'``.
+    """A CSV cell that a spreadsheet shows as text and a terminal prints as text.
+
+    One that starts like a formula gets a ``'``; control characters (an escape sequence or a line
+    break in a file name) are written as their escapes (``\\x1b``, ``\\n``), so ``cat grades.csv``
+    runs nothing and every record stays on one line.
 
     Parameters
     ----------
@@ -36,9 +40,12 @@ def cell(value) -> str:
     --------
     >>> cell("=1+2*3_lab1"), cell("@SUM(A1)"), cell("alice")
     ("'=1+2*3_lab1", "'@SUM(A1)", 'alice')
+    >>> print(cell("x" + chr(27) + "[2J" + chr(10) + "FAKE_lab1"))
+    x\\x1b[2J\\nFAKE_lab1
     """
     s = str(value)
-    return "'" + s if s.startswith(_FORMULA) else s
+    s = "'" + s if s.startswith(_FORMULA) else s
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in s)
 
 
 def _uncell(s: str) -> str:

@@ -273,8 +273,11 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     status, results, run_notes, extra = _run(data, lb, sid, cell_timeout, notebook_timeout, use, caps or Caps())
     notes = cheat_notes(nb) + ([] if use else ["NO SANDBOX (bubblewrap missing or turned off): the kernel ran with "
                                                "resource limits only"])
-    if not sid:
-        notes.append(f"no student id ({how}): judged with the published numbers")
+    personal = {t.id for t in _check.tasks(lb) if t.numbers is not None}
+    if not sid:   # never the published numbers: their answers are public (site, package, classmates)
+        notes.append(f"NO STUDENT ID ({how}): the tasks with personal numbers ({', '.join(sorted(personal))}) "
+                     "score 0; rename the file ID_labN.ipynb or list it in --roster, then grade it again")
+        status = "unidentified" if status == "graded" else status
     elif "check whose" in how:  # the folder and the file name name different students
         notes.append(f"judged as {excerpt(repr(sid), 40)}: {how}")
     declared = extra.get("declared")
@@ -285,7 +288,8 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     notes += [excerpt(n, 300) for n in run_notes[:20]]
     if mismatch:
         notes.insert(0, f"lab mismatch ({mismatch}): graded as {lb}")
-    scores = {tid: float(results[tid]["score"]) if tid in results else 0.0 for tid in points}
+    scores = {tid: float(results[tid]["score"]) if tid in results and (sid or tid not in personal) else 0.0
+              for tid in points}
     scores = {tid: min(max(v, 0.0), points[tid]) if v == v else 0.0 for tid, v in scores.items()}
     messages = {tid: ("✔ " if results[tid].get("correct") else "✘ ") + excerpt(results[tid].get("message", ""), 200)
                 for tid in points if tid in results}
