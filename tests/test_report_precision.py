@@ -66,3 +66,29 @@ def test_an_exact_lever_next_to_a_moderate_idle_spring_stays_balanced(k, x):
     r = lk.build().balance_report()
     assert r.balanced and r.resolvable, r
     assert r.roundoff <= MAX_ROUND_OFF_RATIO * r.tolerance * r.load_scale
+
+
+def _parallelogram(force: float, k: float) -> bl.Design:
+    """Crank 0.6 m, coupler 1 m; loads F on the crank tip, F on the rocker tip and -2F on the coupler
+    cancel through the kinematics; 1 kg at 0.5 m on the crank, a ZFL spring (0.25, 0) -> (0, 0.4)."""
+    lk = bl.Linkage("parallelogram")
+    lk.revolute("ground", (0, 0), "crank", (0, 0))
+    lk.revolute("crank", (0.6, 0), "coupler", (0, 0))
+    lk.revolute("coupler", (1.0, 0), "rocker", (0.6, 0))
+    lk.revolute("rocker", (0, 0), "ground", (1.0, 0))
+    lk.load("crank", (force, 0.3 * force), at=(0.6, 0))
+    lk.load("rocker", (force, 0.3 * force), at=(0.6, 0))
+    lk.load("coupler", (-2 * force, -0.6 * force), at=(0, 0))
+    lk.mass("crank", 1.0, at=(0.5, 0))
+    lk.spring("crank", (0.25, 0), "ground", (0, 0.4), k=k)
+    return lk.build()
+
+
+@pytest.mark.parametrize("force", [1e3, 1e4, 1e5])
+def test_huge_loads_cancelling_across_a_loop_leave_the_exact_design_balanced(force):
+    """Attack A19: the loop's solving error (joint gaps of 1e-13 m) times 1e4 N loads made the exact
+    design 'NOT balanced' and ``bl.balance`` call its own spring infeasible. The exact rate by hand:
+    m g r / (a b) = 1 * 9.81 * 0.5 / (0.25 * 0.4) = 49.05 N/m."""
+    assert _parallelogram(force, 49.05).balance_report().balanced
+    off = _parallelogram(force, 49.05 * (1 + 1e-3)).balance_report()
+    assert not off.balanced and off.load_variation > 1e-4

@@ -420,6 +420,27 @@ def _cancel(energies: list) -> list:
     return groups
 
 
+#: A closed loop is solved to a joint gap of about 1e-13 m; a point's position is then uncertain by
+#: up to this many times the largest gap, and so is each element's energy by force times that.
+CLOSURE_FACTOR: float = 10.0
+
+
+def _closure_allowance(design, q, spring_energies) -> float:
+    """What a closed loop's solving error can add to the summed energy (J): ``CLOSURE_FACTOR`` times
+    the largest joint gap over ``q`` times the sum of the loads' and the springs' largest forces
+    (huge loads cancelling across a loop's bodies amplify it; an open chain has no gap)."""
+    if not design.joints:
+        return 0.0
+    from .kinematics import joint_gaps
+
+    poses, _ = design.kinematics.poses(q)
+    gap = float(np.max(joint_gaps(poses, design.joints), initial=0.0))
+    forces = sum(math.hypot(*ld.force) for ld in design.loads)
+    forces += sum(math.sqrt(2.0 * s.k * float(np.max(spring_energies[:, i], initial=0.0)))
+                  for i, s in enumerate(design.springs))
+    return CLOSURE_FACTOR * gap * forces
+
+
 def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
                    tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
     """The :class:`BalanceReport` of ``design`` (see :meth:`balancelab.Design.balance_report`).
@@ -440,7 +461,7 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
                          "so there is nothing to balance")
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
-    roundoff = ROUND_OFF_ALLOWANCE * float(summed)
+    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, q, vs)
     yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
 
     gf = design.generalized_force(q)
