@@ -32,6 +32,10 @@
           el.setAttribute("aria-label", NAME);
           el.dataset.blScrollName = "1";
         }
+      } else if (!scrolls && !el.hasAttribute("tabindex")) {
+        // Chromium makes every scroll container a tab stop, even one whose glyphs stick out by a
+        // pixel (overflow-y hidden): a silent stop on each inline formula. Not scrolling: none.
+        el.setAttribute("tabindex", "-1");
       } else if (!scrolls && el.dataset.blScrollFocus) {
         if (el.dataset.blScrollFocus === "none") { el.removeAttribute("tabindex"); }
         else { el.setAttribute("tabindex", el.dataset.blScrollFocus); }
