@@ -93,7 +93,7 @@ def test_chapters_give_side_by_side_figures_one_text_per_panel():
         for meta_text, code in CELL.findall(page.read_text(encoding="utf-8")):
             meta = yaml.safe_load(meta_text) or {}
             alt = meta.get("panel_alts")
-            row = re.search(r"plt\.subplots\(1, (\d+)", code)
+            row = re.search(r"plt\.subplots\(\s*1,\s*(\d+)", code)
             if row is None or not (alt or (meta.get("mystnb") or {}).get("image")):
                 continue
             # myst-nb checks that image: alt: is one string; several panels take panel_alts

@@ -140,3 +140,17 @@ def test_rows_record_wall_time_and_peak_memory(graded):
     a = rows["alice_lab2"]
     assert 0 < float(a["seconds"]) < 600 and float(a["peak_mb"]) > 10
     assert rows["dave_lab2"]["seconds"] == ""  # nothing was run for a malformed notebook
+
+
+def test_the_root_sandbox_makes_every_folder_above_a_bind_readable_also_under_its_own_tmp():
+    """A checkout under a temporary folder of mode 700 (``mktemp -d``, as a CI clone may be): the
+    sandbox's own /tmp is empty, so the folders between it and the bound venv must be made (755)
+    for uid 65534, or its Python cannot even start (it fell back to a root kernel)."""
+    from balancelab.course.sandbox import _made_readable
+
+    binds = ["--ro-bind", "/usr", "/usr", "--ro-bind", "/tmp/ci.x/p/.venv", "/tmp/ci.x/p/.venv",
+             "--ro-bind", "/tmp/ci.x/p/balancelab", "/tmp/ci.x/p/balancelab", "--ro-bind", "/usr/lib/x", "/usr/lib/x"]
+    made = _made_readable(binds, ["/tmp", "/dev"])
+    dirs = [made[i + 3] for i in range(0, len(made), 4)]
+    assert made[:4] == ["--perms", "0755", "--dir", "/tmp/ci.x"]
+    assert dirs == ["/tmp/ci.x", "/tmp/ci.x/p"]           # not /tmp itself, nothing under the bound /usr

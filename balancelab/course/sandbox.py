@@ -276,18 +276,21 @@ def _two_step_works(binds: tuple) -> bool:
 
 def _made_readable(binds: list[str], held: list[str]) -> list[str]:
     """``--dir`` with mode 755 for every folder above a bind's destination that no earlier bind holds
-    (bubblewrap would make them 700, owned by root: out of reach of uid 65534)."""
-    out, held, made = [], [Path(h) for h in held], set()
+    (bubblewrap would make them 700, owned by root: out of reach of uid 65534).
+
+    ``held`` are folders the sandbox makes itself (an empty ``/tmp``): they exist, but what lies
+    below them does not (a checkout under ``/tmp/x`` needs ``/tmp/x`` made readable)."""
+    out, made, bound = [], {Path(h) for h in held}, []
     for i, arg in enumerate(binds):
         if arg not in ("--ro-bind", "--ro-bind-try", "--bind", "--symlink"):
             continue
         dest = Path(binds[i + 2])
         for parent in reversed(dest.parents):
-            if parent == Path("/") or parent in made or any(parent == h or h in parent.parents for h in held):
+            if parent == Path("/") or parent in made or any(parent == b or b in parent.parents for b in bound):
                 continue
             out += ["--perms", "0755", "--dir", str(parent)]
             made.add(parent)
-        held.append(dest)
+        bound.append(dest)
     return out
 
 
