@@ -146,3 +146,17 @@ def test_a_book_gives_each_panel_its_text_and_refuses_one_text_for_two_panels(tm
     assert "figure alt text: alt: the figure has 2 panels but 1 alt text was given" in out, out
     page = (tmp_path / "_build" / "html" / "page.html").read_text(encoding="utf-8")
     assert alts(page)[:2] == ["Panel 1 of 2: A link and its spring.", "Panel 2 of 2: Its energies against the link angle."]
+
+
+def test_captions_name_panels_by_order_not_by_side():
+    """Attack A23: on a phone the panels stack, so a caption's "left"/"right" points nowhere (WCAG
+    1.3.3); captions say "first panel", "second panel" instead."""
+    side = re.compile(r"\b(left|right|middle)\b(?!-)", re.IGNORECASE)
+    checked, found = 0, []
+    for page in sorted((ROOT / "book").glob("ch*.md")):
+        for meta_text, _ in CELL.findall(page.read_text(encoding="utf-8")):
+            caption = (((yaml.safe_load(meta_text) or {}).get("mystnb") or {}).get("figure") or {}).get("caption")
+            if caption:
+                checked += 1
+                found += [f"{page.name}: {caption[:80]}" for _ in side.findall(caption.replace("left out", ""))]
+    assert checked >= 20 and not found, found
