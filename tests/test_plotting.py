@@ -477,3 +477,15 @@ def test_the_three_catalog_cognates_trace_one_coupler_curve():
     for curve in ax.curves[1:]:  # driven by the same crank angle: the same points, in order
         np.testing.assert_allclose(curve, first, atol=1e-9)
     assert len(ax.get_legend().get_texts()) == 3
+
+
+def test_an_alt_text_that_says_not_flat_shows_two_different_numbers():
+    """Attack A23: ch3's alt text read "varies from 23 to 23 J": 3 digits hid the variation it names."""
+    import re as _re
+
+    from balancelab.viz.energy import _j_range
+
+    for lo, delta in ((23.04, 0.004), (1.0, 1e-6), (-5.0, 1e-4), (0.0, 1e-3)):
+        a, b = _j_range(lo, lo + delta, 100.0)
+        assert a != b and float(a) <= float(b), (lo, delta, a, b)
+        assert _re.fullmatch(r"-?[\d.e+-]+", a) and _re.fullmatch(r"-?[\d.e+-]+", b)

@@ -95,6 +95,19 @@ def _j(x: float, scale: float) -> str:
     return f"{x:.3g}" if abs(x) > 1e-9 * scale else "0"
 
 
+def _j_range(lo: float, hi: float, scale: float) -> tuple[str, str]:
+    """``lo`` and ``hi`` (J) for words, with as many digits (3 to 9) as it takes to tell them apart.
+
+    >>> _j_range(23.041, 23.046, 10.0)
+    ('23.04', '23.05')
+    """
+    for digits in range(3, 10):
+        a, b = (f"{x:.{digits}g}" if abs(x) > 1e-9 * scale else "0" for x in (lo, hi))
+        if a != b:
+            break
+    return a, b
+
+
 def _span(design: Design, grid: np.ndarray, i: int) -> str:
     unit = q_units(design)[i]
     lo, hi = q_shown(unit, grid[0, i]), q_shown(unit, grid[-1, i])
@@ -144,7 +157,8 @@ def describe_energy(design: Design, report, grid, total, load, spring) -> str:
     units = q_units(design)
     at = format_q(units, report.worst_q, [q_symbol(design, i) for i in range(design.dof)])
     per = "J/rad" if set(units) == {"rad"} else "N" if set(units) == {"m"} else "J/rad or N"
-    return (f"the total energy is not flat: it varies from {_j(t.min(), sc)} to {_j(t.max(), sc)} J over {where} "
+    lo, hi = _j_range(float(t.min()), float(t.max()), sc)
+    return (f"the total energy is not flat: it varies from {lo} to {hi} J over {where} "
             f"({report.variation:.2g} of the energy scale); the largest residual |dV/dq| is "
             f"{report.residual * report.scale:.3g} {per} at {at}")
 
