@@ -58,6 +58,25 @@ def assert_exactly_balanced(design: Design, n: int = 1000) -> None:
         assert r.variation > 1e-7, (label, r.variation)
 
 
+def independent_energy(design: Design, q) -> np.ndarray:
+    """Potential energy (J) at each of ``q``, summed here from the design's poses with its own
+    frame transform: every load (weights, forces) and every spring, any free length. A second
+    bookkeeping, independent of ``Design.potential_energy``."""
+    poses = design.poses(q)
+
+    def world(body, p):
+        x, y, a = poses[:, body, 0], poses[:, body, 1], poses[:, body, 2]
+        return np.stack([x + np.cos(a) * p[0] - np.sin(a) * p[1], y + np.sin(a) * p[0] + np.cos(a) * p[1]], -1)
+
+    V = np.zeros(len(q))
+    for ld in design.loads:
+        V -= (world(ld.body, ld.point) * np.asarray(ld.force)).sum(-1)
+    for s in design.springs:
+        stretch = np.linalg.norm(world(*s.a) - world(*s.b), axis=-1) - s.free_length
+        V += 0.5 * s.k * stretch ** 2
+    return V
+
+
 def assert_symbolic_matches_numeric(design: Design, samples: int = 5) -> None:
     """The symbolic energy (with the design's values) equals the numeric one."""
     import sympy as sp

@@ -87,6 +87,7 @@ def test_pages_workflow_runs_the_readme_commands_and_publishes_the_site():
 
 
 @pytest.mark.parametrize("path, schema", [(".github/workflows/pages.yml", "vendor.github-workflows"),
+                                          (".github/workflows/tests.yml", "vendor.github-workflows"),
                                           (".gitlab-ci.yml", "vendor.gitlab-ci")])
 def test_ci_files_pass_their_schema_linter(path, schema):
     """check-jsonschema validates against the schema it bundles (offline)."""

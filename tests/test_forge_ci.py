@@ -1,9 +1,8 @@
 """The forge files: tests run on every merge request, and the package metadata names the repository
-that ``_config.yml`` names (the one place the repository is configured)."""
+that ``_config.yml`` names (the one place the repository is configured). The schema linter of every
+CI file is in tests/test_book.py (test_ci_files_pass_their_schema_linter)."""
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 from urllib.parse import urlsplit
 
@@ -40,14 +39,6 @@ def test_gitlab_runs_the_test_command_on_merge_requests_and_branches():
     assert '$CI_PIPELINE_SOURCE == "merge_request_event"' in conditions
     assert any("$CI_COMMIT_BRANCH != $CI_DEFAULT_BRANCH" in c for c in conditions)
     assert ci["pages"]["rules"] == [{"if": "$CI_COMMIT_BRANCH == $CI_DEFAULT_BRANCH"}]
-
-
-@pytest.mark.parametrize("path, schema", [(".github/workflows/tests.yml", "vendor.github-workflows")])
-def test_the_tests_workflow_passes_its_schema_linter(path, schema):
-    pytest.importorskip("check_jsonschema")
-    r = subprocess.run([sys.executable, "-m", "check_jsonschema", "--builtin-schema", schema, str(ROOT / path)],
-                       capture_output=True, text=True, timeout=120)
-    assert r.returncode == 0, r.stdout + r.stderr
 
 
 def test_package_metadata_names_the_configured_repository_and_its_site():

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import balancelab as bl
+from conftest import independent_energy
 from random_linkages import KINDS, ground_springs, moving
 
 G = 9.81
@@ -33,20 +34,8 @@ def balanced_design(kind, seed):
 
 
 def own_spread(design, q):
-    """max - min of the energy (J) summed here from the poses: weights, loads and springs (any free length)."""
-    poses = design.poses(q)
-
-    def world(body, p):
-        x, y, a = poses[:, body, 0], poses[:, body, 1], poses[:, body, 2]
-        return np.stack([x + np.cos(a) * p[0] - np.sin(a) * p[1], y + np.sin(a) * p[0] + np.cos(a) * p[1]], -1)
-
-    V = np.zeros(len(q))
-    for ld in design.loads:
-        V -= (world(ld.body, ld.point) * np.asarray(ld.force)).sum(-1)
-    for s in design.springs:
-        stretch = np.linalg.norm(world(*s.a) - world(*s.b), axis=-1) - s.free_length
-        V += 0.5 * s.k * stretch ** 2
-    return float(np.ptp(V))
+    """max - min of the energy (J) summed independently (conftest.independent_energy)."""
+    return float(np.ptp(independent_energy(design, q)))
 
 
 def cancelling_pair(design, k=1e7):
