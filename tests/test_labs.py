@@ -177,11 +177,18 @@ def test_solution_notebooks_pass_nbval():
 
 @pytest.mark.parametrize("lab", ["lab1", "lab7", "lab8"])
 def test_grading_solution_and_student_versions(lab, tmp_path):
-    """The trusted grader gives a solution full marks and the untouched student version none."""
+    """The trusted grader gives a solution full marks and the untouched student version none.
+
+    The solution is graded as student ``s1``'s (its import cell set to that id, as a student sets
+    it): a file whose id cannot be told scores 0 on the tasks with personal numbers."""
     sol = _lab_file(lab)
-    full = grade_notebook(sol, cell_timeout=120)
+    mine = tmp_path / f"s1_{sol.name}"
+    text = sol.read_text(encoding="utf-8")
+    assert ('STUDENT_ID = \\"\\"' in text) == any(t.numbers is not None for t in tasks(lab))
+    mine.write_text(text.replace('STUDENT_ID = \\"\\"', 'STUDENT_ID = \\"s1\\"'), encoding="utf-8")
+    full = grade_notebook(mine, cell_timeout=120, student_id="s1")
     assert full.status == "graded" and full.total == full.max_total == sum(t.points for t in tasks(lab))
-    empty = grade_notebook(STUDENT / sol.name, cell_timeout=120)
+    empty = grade_notebook(STUDENT / sol.name, cell_timeout=120, student_id="s1")
     assert empty.status == "graded" and empty.total == 0 and empty.max_total == full.max_total
     assert all(m == "✘ No answer yet." for m in empty.messages.values())
 
