@@ -205,11 +205,12 @@ class Design:
             _scable=tuple(s.cable for s in S))
         for key, value in arrays.items():
             object.__setattr__(self, key, value)
+        object.__setattr__(self, "_ref", _report.reference_point(self))
 
     # ------------------------------------------------------------- kinematics
     def check_q(self, q) -> np.ndarray:
         """``q`` as a float array of shape ``(..., dof)``, or a clear error (plain angles for one dof)."""
-        q = real_array("q (angles in radians)", q)
+        q = real_array(f"q ({_report.q_meaning(self)})", q)
         if self.dof == 1 and (q.ndim == 0 or q.shape[-1] != 1):
             q = q[..., None]
         if q.ndim == 0 or q.shape[-1] != self.dof:
@@ -374,11 +375,12 @@ class Design:
         """
         lead = poses.shape[:-2]
         trig = dict(trig or {})
+        rx, ry = self._ref
 
-        def world(body, p):
+        def world(body, p):  # about the reference point: far origins lose no digits
             if body == 0:  # the ground sits at the origin and never turns
-                return p[0], p[1]
-            x, y = poses[..., body, 0], poses[..., body, 1]
+                return p[0] - rx, p[1] - ry
+            x, y = poses[..., body, 0] - rx, poses[..., body, 1] - ry
             if p[0] == 0 and p[1] == 0:
                 return x, y
             if body not in trig:
@@ -413,7 +415,10 @@ class Design:
     def element_energies(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Energy (J) of each load and of each spring: arrays of shape ``(m, n_loads)``, ``(m, n_springs)``.
 
-        ``q`` is flattened to ``m`` configurations of shape ``(m, dof)``.
+        ``q`` is flattened to ``m`` configurations of shape ``(m, dof)``. A load's energy is taken
+        about a ground point of the design (the ground end of its first ground joint), not about the
+        origin: it differs from :meth:`potential_energy`'s by a constant, and does not lose digits
+        when the design sits far from the origin.
         """
         q = self.check_q(q).reshape(-1, self.dof)
         vl, vs = self._element_energies(self.poses(q))
@@ -453,6 +458,7 @@ class Design:
             spring = sum(vs[1:], vs[0]) if vs else 0.0
             out[1, start:start + len(part)] = load
             out[2, start:start + len(part)] = spring
+        out[1] -= float(np.sum(self._lf @ self._ref)) if len(self.loads) else 0.0  # about the origin again
         out[0] = out[1] + out[2]
         return Energy(*(row.reshape(lead) for row in out))
 
@@ -471,7 +477,7 @@ class Design:
         -------
         numpy.ndarray
         """
-        q, h = self.check_q(q), step_size("h (step, rad)", h, 0.1)
+        q, h = self.check_q(q), step_size(f"h (step, {'rad or m' if 'm' in _report.q_units(self) else 'rad'})", h, 0.1)
         out = np.empty(q.shape)
         for i in range(self.dof):
             e = np.zeros(self.dof)
@@ -480,10 +486,8 @@ class Design:
             okm = self.reachable(q - e)
             qp = np.where(okp[..., None], q + e, q)
             qm = np.where(okm[..., None], q - e, q)
-            vp = self.potential_energy(qp).total
-            vm = self.potential_energy(qm).total
             den = np.where(okp, h, 0.0) + np.where(okm, h, 0.0)
-            out[..., i] = (vp - vm) / np.where(den > 0, den, 1.0)
+            out[..., i] = _report.energy_change(self, qp, qm) / np.where(den > 0, den, 1.0)
         return out
 
     def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,

@@ -25,10 +25,12 @@ from typing import NamedTuple
 import numpy as np
 
 from .cancel import EXACT, null_subset
+from .samples import check_spread
 from .validation import positive_int
 
 __all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q"]
+           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
+           "q_meaning", "reference_point", "energy_change"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
 #: potential energy over the sampled configurations, divided by the load scale.
@@ -164,6 +166,65 @@ def q_units(design) -> tuple[str, ...]:
     return tuple(units) if units is not None else ("rad",) * design.dof
 
 
+def q_meaning(design) -> str:
+    """What a design's ``q`` holds, for error messages: ``"angles in radians"``, ``"slides in metres"``
+    or ``"angles in radians and slides in metres"``.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> q_meaning(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3))
+    'angles in radians'
+    """
+    units = set(q_units(design))
+    parts = (["angles in radians"] if "rad" in units else []) + (["slides in metres"] if "m" in units else [])
+    return " and ".join(parts) or "angles in radians"
+
+
+def reference_point(design) -> np.ndarray:
+    """The ground point (m) about which a design's element energies are taken: the ground end of its
+    first ground joint, else the first ground end of a spring or a load, else the origin.
+
+    Energies about a point of the mechanism do not lose digits when the whole design sits far from
+    the origin (a pivot 1e6 m up), so the verdict and ``dV/dq`` do not depend on where the origin is.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> reference_point(bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)).tolist()
+    [0.0, 0.0]
+    """
+    for j in design.joints:
+        if j.body_i == 0 or j.body_j == 0:
+            return np.array(j.point_i if j.body_i == 0 else j.point_j, dtype=float)
+    ends = [(s.b.body, s.b.point) for s in design.springs] + [(s.a.body, s.a.point) for s in design.springs]
+    for body, point in ends + [(ld.body, ld.point) for ld in design.loads]:
+        if body == 0:
+            return np.array(point, dtype=float)
+    return np.zeros(2)
+
+
+def energy_change(design, qp: np.ndarray, qm: np.ndarray) -> np.ndarray:
+    """``V(qp) - V(qm)`` (J), each element's change taken first and then summed (energies about
+    :func:`reference_point`): a large constant energy (a far origin, an idle stiff spring) costs no
+    digits, as it would in the difference of two summed totals.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    >>> bool(abs(energy_change(d, np.array([[0.3]]), np.array([[0.1]]))[0]) < 1e-12)
+    True
+    """
+    shape = qp.shape[:-1]
+    vlp, vsp = design._element_energies(design._checked_poses(qp.reshape(-1, design.dof))[0])
+    vlm, vsm = design._element_energies(design._checked_poses(qm.reshape(-1, design.dof))[0])
+    change = np.zeros(int(np.prod(shape, dtype=int)))
+    for a, b in zip(vlp + vsp, vlm + vsm):
+        change = change + (a - b)
+    return change.reshape(shape)
+
+
 def q_shown(unit: str, value):
     """A coordinate as shown to a reader: an angle (rad) in degrees, a slide (m) as it is.
 
@@ -246,10 +307,13 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     else:
         what = "q"
         q = design.check_q(q).reshape(-1, design.dof)
-        distinct = len(np.unique(q, axis=0))
+        units = q_units(design)
+        wrapped = np.where(np.array(units) == "rad", np.angle(np.exp(1j * q)), q)  # q and q + 2 pi alike
+        distinct = len(np.unique(np.round(wrapped, 12), axis=0))
         if distinct < MIN_CONFIGURATIONS:
             raise ValueError(f"q must hold at least {MIN_CONFIGURATIONS} distinct configurations to show "
                              f"that the energy is constant, got {distinct}")
+        check_spread(q, units, design.q_names)
     extent = np.ptp(q, axis=0)
     reach = extent if (what == "n" and n == 1000 and seed == 0) else reachable_extent(design)
     for name, unit, span, full in zip(design.q_names, q_units(design), extent, reach):
@@ -425,7 +489,7 @@ def _cancel(energies: list) -> list:
 CLOSURE_FACTOR: float = 10.0
 
 
-def _closure_allowance(design, q, spring_energies) -> float:
+def _closure_allowance(design, poses, spring_energies) -> float:
     """What a closed loop's solving error can add to the summed energy (J): ``CLOSURE_FACTOR`` times
     the largest joint gap over ``q`` times the sum of the loads' and the springs' largest forces
     (huge loads cancelling across a loop's bodies amplify it; an open chain has no gap)."""
@@ -433,7 +497,6 @@ def _closure_allowance(design, q, spring_energies) -> float:
         return 0.0
     from .kinematics import joint_gaps
 
-    poses, _ = design.kinematics.poses(q)
     gap = float(np.max(joint_gaps(poses, design.joints), initial=0.0))
     forces = sum(math.hypot(*ld.force) for ld in design.loads)
     forces += sum(math.sqrt(2.0 * s.k * float(np.max(spring_energies[:, i], initial=0.0)))
@@ -453,7 +516,8 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     """
     tolerance = check_tolerance(tolerance)
     q = _configurations(design, q, n, seed)
-    vl, vs = design.element_energies(q)
+    poses = design.poses(q)  # once: the energies and the closure allowance both need them
+    vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
     total = vl.sum(-1) + vs.sum(-1)
     scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
     if scale == 0.0:
@@ -461,7 +525,7 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
                          "so there is nothing to balance")
     spread = float(np.ptp(total))
     summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
-    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, q, vs)
+    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, poses, vs)
     yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
 
     gf = design.generalized_force(q)

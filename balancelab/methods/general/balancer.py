@@ -12,11 +12,12 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import Load, Spring, G
-from ...core.validation import planar_point, positive_int
+from ...core.validation import MAX_MAGNITUDE, MIN_POSITIVE, planar_point, positive_int
 from ...core.errors import InfeasibleDesign
 from .problem import Block, columns
 from .bilinear import search
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
+from .verdicts import limit
 
 __all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
 
@@ -129,10 +130,11 @@ def _elements(design: Design, blocks, x: np.ndarray):
     springs, loads, params = list(design.springs), list(design.loads), {}
     size = _size(design)
     active = {}
-    for b in blocks:
+    for i, b in enumerate(blocks):
         value = float(x[b.cols[0]])
         if value <= 0:
             continue
+        _check_limits(design, blocks, i, value)
         ends = list(b.ends)
         if b.free is not None:  # round-off (1e-12 of the linkage's size) becomes an exact zero
             point = [float(x[c] / value) for c in b.cols[1:]]
@@ -151,6 +153,21 @@ def _elements(design: Design, blocks, x: np.ndarray):
             if b.free is not None:
                 active.update(_active(b, ends[0][1], (f"c_x{j}", f"c_y{j}")))
     return springs, loads, params, active
+
+
+def _check_limits(design: Design, blocks, index: int, value: float) -> None:
+    """InfeasibleDesign (verdict ``"limit"``) when a solved rate or counter mass is beyond what a design
+    may hold (``MIN_POSITIVE <= k <= MAX_MAGNITUDE`` N/m, a weight up to ``MAX_MAGNITUDE`` N), never the
+    validators' plain ValueError from inside ``balance``."""
+    b = blocks[index]
+    kind = "springs" if b.kind == "spring" else "counterweights"
+    what = f"{kind}[{sum(c.kind == b.kind for c in blocks[:index])}] {'rate k' if b.kind == 'spring' else 'counter mass'}"
+    if b.kind == "spring" and value > MAX_MAGNITUDE:
+        raise limit(design.name, what, value, "N/m", MAX_MAGNITUDE, above=True)
+    if b.kind == "spring" and value < MIN_POSITIVE:
+        raise limit(design.name, what, value, "N/m", MIN_POSITIVE, above=False)
+    if b.kind == "mass" and value * G > MAX_MAGNITUDE:
+        raise limit(design.name, what, value, "kg", MAX_MAGNITUDE / G, above=True)
 
 
 def _threads(p_size: int):

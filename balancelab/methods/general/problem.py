@@ -26,6 +26,7 @@ import numpy as np
 
 from ...core.elements import G
 from ...core.kinematics import body_to_world
+from ...core.report import reference_point
 
 __all__ = ["Block", "Problem", "columns", "harmonics", "lp_constraints"]
 
@@ -138,7 +139,8 @@ def columns(design, blocks, q) -> Problem:
     >>> p.A.shape, round(float(np.ptp(p.v)), 6) <= 2 * 2.0 * 9.81 * 0.5
     ((50, 1), True)
     """
-    poses = design.poses(q)
+    poses = np.array(design.poses(q), dtype=float, copy=True)
+    poses[..., :2] -= reference_point(design)  # about a ground point: a far origin costs no digits
     cols, mean = [], []
     for block in blocks:
         new = _spring_columns(poses, block) if block.kind == "spring" else _mass_columns(poses, block)

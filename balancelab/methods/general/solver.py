@@ -126,8 +126,10 @@ def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq,
 
 def _negligible(p: Problem, x: np.ndarray) -> np.ndarray:
     """Candidates whose value is <= 0, or whose energy is below ``1e-12`` of the design's energy
-    variation (leftover rates of 1e-13 N/m and the like): a mask over the variables."""
-    scale = max(float(np.linalg.norm(p.v)), 1e-300)
+    variation (leftover rates of 1e-13 N/m and the like): a mask over the variables. That variation
+    is the one of what the design carries (``v``) or, for a design balanced already (``v`` is then
+    round-off), the spreads of its elements' own energies: a round-off rate is dropped, not returned."""
+    scale = max(float(np.linalg.norm(p.v)), p.load_spread * np.sqrt(len(p.v)), 1e-300)
     out = np.zeros(p.nvar, dtype=bool)
     for b in p.blocks:
         if x[b.cols[0]] <= 0 or np.linalg.norm(p.A[:, b.cols] @ x[b.cols]) <= 1e-12 * scale:

@@ -24,10 +24,11 @@ import numpy as np
 from ...core.errors import InfeasibleDesign
 from .problem import Problem, harmonics, lp_constraints
 
-__all__ = ["VERDICTS", "infeasible", "nice_box"]
+__all__ = ["VERDICTS", "infeasible", "nice_box", "limit"]
 
-#: the three reasons a balance problem has no admissible solution
-VERDICTS = ("impossible", "negative", "box", "not_found")
+#: the reasons a balance problem has no admissible solution (``"limit"``: a rate or mass beyond
+#: what a design may hold, see :func:`limit`)
+VERDICTS = ("impossible", "negative", "box", "not_found", "limit")
 
 _TERM_TOL = 1e-9  # energy terms below this fraction of the loads' exchanged energy are round-off
 
@@ -179,3 +180,20 @@ def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
             b.box = box
     lp = linprog(np.zeros(p.nvar), A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     return lp.x * S if lp.status == 0 else None
+
+
+def limit(name: str, what: str, value: float, unit: str, bound: float, above: bool) -> InfeasibleDesign:
+    """The :class:`InfeasibleDesign` (verdict ``"limit"``) of a balance that needs a rate or mass beyond
+    the limits every design obeys (``1e-12 <= k <= 1e12`` N/m, loads up to ``1e12`` N).
+
+    Examples
+    --------
+    >>> err = limit("lever", "springs[0] rate k", 9.81e14, "N/m", 1e12, above=True)
+    >>> err.verdict, str(err)[:60]
+    ('limit', 'lever: no balanced design from these candidates: springs[0] ')
+    """
+    side = "above the largest" if above else "below the smallest"
+    hint = "a longer lever arm needs less" if above else "a shorter lever arm needs more"
+    return _error("limit", f"{name}: no balanced design from these candidates: {what} would have to be "
+                  f"{value:.3g} {unit}, {side} a design may hold ({bound:g} {unit}); move the candidate's "
+                  f"points ({hint}) or choose other candidates")
