@@ -241,13 +241,14 @@ class LinkageKinematics(Kinematics):
         tangent keeps the continuation on its branch where two branches cross (a parallelogram's
         change point)."""
         jac = self.topology.residual_and_jacobian(start)[1]
-        Jz, Jq = jac[..., self.dependent], jac[..., list(self.driving)]
+        unit = self.scale[self.dependent]  # columns alike, so that the damping cannot swamp a tiny linkage's angles
+        Jz, Jq = jac[..., self.dependent] * unit, jac[..., list(self.driving)]
         Jzt = np.swapaxes(Jz, -1, -2)
         A = Jzt @ Jz
         A = A + (1e-12 * np.trace(A, axis1=-2, axis2=-1)[..., None, None] + 1e-300) * np.eye(len(self.dependent))
         dq = q - start[..., list(self.driving)]
         with np.errstate(all="ignore"):
-            dz = -np.linalg.solve(A, (Jzt @ (Jq @ dq[..., None])))[..., 0]
+            dz = -np.linalg.solve(A, (Jzt @ (Jq @ dq[..., None])))[..., 0] * unit
         out = np.array(start, dtype=float, copy=True)
         lim = 0.5 * self.scale[self.dependent]
         out[..., self.dependent] += np.clip(np.where(np.isfinite(dz), dz, 0.0), -lim, lim)
@@ -302,6 +303,10 @@ class LinkageKinematics(Kinematics):
             nodes = down[::-1] + up[1:]
             self.q_range = np.array([[nodes[0][d], nodes[-1][d]]])
         table = np.array(nodes)
+        if len(table) < 2:  # never an IndexError from the look-up: say what is wrong
+            raise ValueError(f"the linkage cannot move from its assembled configuration along "
+                             f"{self.variable_name(d)}: its stroke or range leaves no room "
+                             "(pass strokes that contain the assembled configuration, or a guess=)")
         self._table = (table[:, d], self._hermite(table))
 
     def _hermite(self, table: np.ndarray) -> np.ndarray:

@@ -299,7 +299,8 @@ def newton(topology: Topology, angles: np.ndarray, dependent: Sequence[int], tol
     """
     th = np.array(angles, dtype=float, copy=True)
     dep = list(dependent)
-    lim = np.where(np.array(dep, dtype=int) >= topology.nbodies, 0.5 * topology.size, 0.5)  # rad; m for slides
+    unit = np.where(np.array(dep, dtype=int) >= topology.nbodies, topology.size, 1.0)  # rad; m for slides
+    lim = 0.5 * unit
     prev = np.full(th.shape[:-1], np.inf)
     for _ in range(iterations + 1):
         res, jac = topology.residual_and_jacobian(th)
@@ -309,13 +310,13 @@ def newton(topology: Topology, angles: np.ndarray, dependent: Sequence[int], tol
         prev = np.minimum(prev, err)
         if done.all() or _ == iterations:
             break
-        J = jac[..., dep]
-        Jt = np.swapaxes(J, -1, -2)
+        J = jac[..., dep] * unit  # columns alike (m per rad, m per size of slide): a tiny linkage's damping
+        Jt = np.swapaxes(J, -1, -2)  # must not swamp its angles (a 1 um slider)
         A = Jt @ J
         mu = damping * np.trace(A, axis1=-2, axis2=-1)[..., None, None] + 1e-300
         A = A + mu * np.eye(len(dep))
         with np.errstate(all="ignore"):
             step = _solve_small(A, -(Jt @ res[..., None])[..., 0])
-        step = np.where(np.isfinite(step) & ~done[..., None], step, 0.0)
+        step = np.where(np.isfinite(step) & ~done[..., None], step * unit, 0.0)
         th[..., dep] += np.clip(step, -lim, lim)
     return th, np.where(np.isfinite(err), err, np.inf)
