@@ -532,7 +532,8 @@ def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
-                         energy=float(np.mean(total)), worst_q=q[worst].copy(),
+                         energy=float(np.mean(total)) - float(np.sum(design._lf @ design._ref)),  # about the origin
+                         worst_q=q[worst].copy(),
                          balanced=bool(spread <= tolerance * yardstick + roundoff
                                        and not roundoff > MAX_ROUND_OFF_RATIO * tolerance * yardstick),
                          tolerance=tolerance, n=len(q), load_scale=yardstick, load_variation=spread / yardstick,

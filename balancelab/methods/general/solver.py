@@ -90,6 +90,8 @@ def _preload(p: Problem, D: np.ndarray, c: np.ndarray, y0: np.ndarray, eq, ineq,
     dimension, from the linear program's answer ``y0``)."""
     from scipy.optimize import minimize
 
+    if null.shape[1] == 0:  # no free choice: the LP's answer is the only one (and SLSQP, given no
+        return y0  # unknowns, hands LAPACK empty arrays that print "illegal value" on stderr)
     free = np.array([b.cols for b in p.blocks if b.kind == "spring" and b.free is not None], dtype=int)
     k, mx, my = free.T
 
