@@ -299,7 +299,8 @@ class EnergyView:
             self.residual_image = residual_ax.imshow(np.zeros((2, 2)), origin="lower", aspect="auto",
                                                      cmap="magma", extent=extent, interpolation="nearest")
             self.residual_colorbar = residual_ax.figure.colorbar(
-                self.residual_image, ax=residual_ax, label="|dV/dq| / scale (1/rad)")
+                self.residual_image, ax=residual_ax,
+                label=f"|dV/dq| / scale ({' or '.join('1/' + v for v in sorted(set(u), reverse=True))})")
             residual_ax.set_xlabel(angle_label(design, 0))
             residual_ax.set_ylabel(angle_label(design, 1))
             residual_ax.set_title("residual generalized force", fontsize=FONT["title"])
