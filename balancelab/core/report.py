@@ -313,7 +313,6 @@ def _configurations(design, q, n, seed) -> np.ndarray:
         if distinct < MIN_CONFIGURATIONS:
             raise ValueError(f"q must hold at least {MIN_CONFIGURATIONS} distinct configurations to show "
                              f"that the energy is constant, got {distinct}")
-        check_spread(q, units, design.q_names)
     extent = np.ptp(q, axis=0)
     reach = extent if (what == "n" and n == 1000 and seed == 0) else reachable_extent(design)
     for name, unit, span, full in zip(design.q_names, q_units(design), extent, reach):
@@ -322,6 +321,8 @@ def _configurations(design, q, n, seed) -> np.ndarray:
                 f"{what} must give configurations spanning at least {MIN_COVERAGE:g} of each "
                 f"coordinate's reachable range: {name} spans {_q_text(unit, span, '.3g')} of "
                 f"{_q_text(unit, full, '.4g')}" + (" (sample more configurations)" if what == "n" else ""))
+    if what == "q":
+        check_spread(q, q_units(design), design.q_names)
     return q
 
 

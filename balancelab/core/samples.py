@@ -12,8 +12,12 @@ import numpy as np
 
 __all__ = ["harmonic_features", "check_spread"]
 
-#: The configurations must give the harmonics a matrix of at least this reciprocal condition number.
-MIN_CONDITION: float = 1e-6
+#: The configurations must give the harmonics a matrix of at least this reciprocal condition number
+#: (lax: harmonics over a short range are nearly dependent, yet tell a constant energy apart).
+MIN_CONDITION: float = 1e-12
+
+#: Fewest distinct values of each coordinate (an energy term of an angle has up to five coefficients).
+MIN_VALUES: int = 5
 
 
 def harmonic_features(q: np.ndarray, units) -> tuple[np.ndarray, list[str]]:
@@ -69,8 +73,19 @@ def check_spread(q: np.ndarray, units, names) -> None:
     >>> check_spread(np.c_[t, np.where(t > 0, 0.0, np.pi)], ("rad", "rad"), ("theta_1", "theta_2"))
     Traceback (most recent call last):
     ...
-    ValueError: q must vary every coordinate independently over its range (so that each term of the energy, cos and sin of every coordinate, their doubles and their differences, is seen to change): on these 40 configurations sin q2 does not vary independently; coordinates ('theta_1', 'theta_2'); use design.sample(n) or a grid
+    ValueError: q must give each coordinate at least 5 distinct values (so that each term of the energy is seen to change): theta_2 takes 2; use design.sample(n) or a grid
+    >>> check_spread(np.c_[t, t], ("rad", "rad"), ("theta_1", "theta_2"))  # theta_2 = theta_1 throughout
+    Traceback (most recent call last):
+    ...
+    ValueError: q must vary every coordinate independently over its range (so that each term of the energy, cos and sin of every coordinate, their doubles and their differences, is seen to change): on these 40 configurations cos(q2 - q1) does not vary independently; coordinates ('theta_1', 'theta_2'); use design.sample(n) or a grid
     """
+    for i, unit in enumerate(units):  # each coordinate: enough distinct values (an angle modulo a turn)
+        v = np.angle(np.exp(1j * q[:, i])) if unit == "rad" else q[:, i]
+        values = len(np.unique(np.round(v / max(float(np.abs(v).max()), 1e-300), 9)))
+        if values < MIN_VALUES:
+            raise ValueError(f"q must give each coordinate at least {MIN_VALUES} distinct values (so that each "
+                             f"term of the energy is seen to change): {names[i]} takes {values}; "
+                             "use design.sample(n) or a grid")
     F, labels = harmonic_features(q, units)
     F = F - F.mean(0)
     norms = np.linalg.norm(F, axis=0)
