@@ -88,9 +88,12 @@ class LinkageKinematics(Kinematics):
         self.joints = tuple(Joint(*j) for j in joints)
         self.sliders = tuple(p if isinstance(p, Slider) else Slider(*p) for p in sliders)
         self.body_names = tuple(names) if names is not None else tuple(f"body {i}" for i in range(nbodies))
-        pts = [abs(v) for j in self.joints for p in (j.point_i, j.point_j) for v in p]
-        pts += [abs(v) for sl in self.sliders for p in (sl.point_a, sl.point_b) for v in p]
-        self.size = max(max(pts, default=0.0), 1e-9)
+        ends = [(j.body_i, j.point_i) for j in self.joints] + [(j.body_j, j.point_j) for j in self.joints]
+        ends += [(sl.body_a, sl.point_a) for sl in self.sliders] + [(sl.body_b, sl.point_b) for sl in self.sliders]
+        ground = [np.asarray(p, dtype=float) for b, p in ends if b == 0]
+        ref = ground[0] if ground else np.zeros(2)  # ground points count from one of them: the linkage's
+        pts = [abs(v) for b, p in ends for v in (np.asarray(p, dtype=float) - ref if b == 0 else p)]  # size,
+        self.size = max(max(pts, default=0.0), 1e-9)  # not its distance from the origin
         self.topology = Topology(self.nbodies, self.joints, self.sliders, self.size)
         self.nvar = self.topology.nvar
         self.strokes = np.array([(-2 * self.size, 2 * self.size) if st is None else st
