@@ -16,8 +16,13 @@ __all__ = ["EXACT", "MAX_ENUMERATED", "null_subset"]
 #: sum of its elements' own spreads (the closed-loop kinematics is solved to about 1e-12).
 EXACT: float = 1e-9
 
-#: Most elements (with a varying energy) whose subsets are all examined: ``2**16`` subsets.
+#: Most elements (with a varying energy) whose subsets are all examined: ``2**16`` subsets; more
+#: elements are searched by a mixed-integer program.
 MAX_ENUMERATED: int = 16
+
+#: Rows of the energies the integer program constrains (evenly spaced), before its answer is
+#: checked on every row.
+_MILP_ROWS = 256
 
 _CHUNK = 2048
 _ROWS = 128
@@ -48,11 +53,15 @@ def null_subset(energies, eta: float = EXACT) -> np.ndarray:
     eta : float
         Relative tolerance of "sums to a constant", ``0 < eta < 1``.
 
+    Up to :data:`MAX_ENUMERATED` varying columns every subset is examined; beyond, the heaviest null
+    set is found by a mixed-integer program (:func:`_largest_by_milp`, HiGHS: exact for the null
+    condition on every row), and members it only borrows cancellation from are then dropped one at a
+    time (the enumeration's "one piece" rule, applied greedily).
+
     Returns
     -------
     numpy.ndarray of bool, shape (n,)
-        The part; all False when none is null (or when more than :data:`MAX_ENUMERATED` columns
-        vary: the search is exhaustive or not done). Columns whose energy does not vary are never in it.
+        The part; all False when none is null. Columns whose energy does not vary are never in it.
 
     Examples
     --------
@@ -65,7 +74,10 @@ def null_subset(energies, eta: float = EXACT) -> np.ndarray:
     out = np.zeros(E.shape[1], dtype=bool)
     spread = np.ptp(E, axis=0)
     live = np.flatnonzero(spread > 0)
-    if len(live) < 2 or len(live) > MAX_ENUMERATED:
+    if len(live) < 2:
+        return out
+    if len(live) > MAX_ENUMERATED:  # 2**n subsets are too many: one integer program instead
+        out[live[_largest_by_milp(E[:, live], spread[live], eta)]] = True
         return out
     codes, weight, residual = _null_codes(E[:, live], spread[live], eta)
     ok = _pieces(codes, residual)
@@ -116,4 +128,86 @@ def _pieces(codes: np.ndarray, residual: np.ndarray) -> np.ndarray:
         ok[i] = bool(np.isin(c ^ parts, parts).any())
     out = np.zeros(len(codes), dtype=bool)
     out[order] = ok
+    return out
+
+
+def _milp_null(E: np.ndarray, s: np.ndarray, eta: float, allowed: np.ndarray):
+    """The heaviest null set (``s . x`` largest) of the ``allowed`` columns of ``E`` (spreads ``s``), by
+    a mixed-integer program (HiGHS).
+
+    Binary ``x`` (membership), continuous ``u``, ``l``: ``l <= E_r x <= u`` on every row ``r`` of
+    :data:`_MILP_ROWS` evenly spaced rows, ``u - l <= eta s . x + noise . x`` (the null condition) and
+    ``sum x >= 2``. Returns the mask, or None when there is none."""
+    from scipy.optimize import Bounds, LinearConstraint, milp
+
+    n = E.shape[1]
+    noise = 1e-14 * np.max(np.abs(E), axis=0)
+    rows = E[np.unique(np.linspace(0, len(E) - 1, min(len(E), _MILP_ROWS)).astype(int))]
+    rows = rows - rows[0]  # energies about the first row: a constant offset changes nothing
+    m = len(rows)
+    A = np.zeros((2 * m + 2, n + 2))
+    A[:m, :n], A[:m, n] = rows, -1.0  # E_r x - u <= 0
+    A[m:2 * m, :n], A[m:2 * m, n + 1] = -rows, 1.0  # l - E_r x <= 0
+    A[2 * m, :n], A[2 * m, n], A[2 * m, n + 1] = -(eta * s + noise), 1.0, -1.0  # u - l <= (eta s + noise) . x
+    A[2 * m + 1, :n] = -1.0  # at least two members
+    upper = np.r_[np.zeros(2 * m + 1), -2.0]
+    big = float(np.abs(rows).sum(1).max(initial=0.0)) + 1.0
+    cost = np.r_[-s / s.max(), 0.0, 0.0]
+    bounds = Bounds(np.r_[np.zeros(n), -big, -big], np.r_[allowed.astype(float), big, big])
+    res = milp(cost, constraints=LinearConstraint(A, -np.inf, upper), integrality=np.r_[np.ones(n), 0, 0],
+               bounds=bounds, options={"time_limit": 10.0})
+    return None if res.x is None else res.x[:n] > 0.5
+
+
+#: Largest null set looked for inside a null set found by the integer program, by enumeration (the
+#: integer program cannot tell residuals below its tolerances, some 1e-7 of the energies, apart).
+_SMALL_PIECE = 3
+
+
+def _smallest_null(E, s, eta, noise, within: np.ndarray):
+    """The null set of at most :data:`_SMALL_PIECE` members of ``within`` whose summed energy varies
+    least, as a mask (None when none is null)."""
+    from itertools import combinations
+
+    idx = np.flatnonzero(within)
+    sets = [c for size in range(2, _SMALL_PIECE + 1) for c in combinations(idx, size)]
+    if not sets:
+        return None
+    X = np.zeros((E.shape[1], len(sets)))
+    for j, c in enumerate(sets):
+        X[list(c), j] = 1.0
+    ptp = np.ptp(E @ X, axis=0)
+    ok = ptp <= eta * (s @ X) + noise @ X
+    if not ok.any():
+        return None
+    best = np.flatnonzero(ok)[np.argmin(ptp[ok])]
+    return X[:, best] > 0.5
+
+
+def _largest_by_milp(E: np.ndarray, s: np.ndarray, eta: float) -> np.ndarray:
+    """The largest part made of null sets, each one piece, as a mask (mixed-integer programs).
+
+    The heaviest null set ``S`` of what is left is one piece when no null set of at most
+    :data:`_SMALL_PIECE` members inside it varies less (its cancellation is its own); else that
+    smaller set is a piece (a huge null set does not carry an unbalanced element along). Pieces are
+    taken out until none is left; each is checked on every row."""
+    n = E.shape[1]
+    noise = 1e-14 * np.max(np.abs(E), axis=0)
+
+    def residual(mask):
+        return float(np.ptp(E[:, mask].sum(-1)))
+
+    def null(mask):
+        return mask.sum() >= 2 and residual(mask) <= eta * float(s[mask].sum()) + float(noise[mask].sum())
+
+    out = np.zeros(n, dtype=bool)
+    left = np.ones(n, dtype=bool)
+    for _ in range(n):
+        heavy = _milp_null(E, s, eta, left)
+        if heavy is None or not null(heavy):
+            break
+        light = _smallest_null(E, s, eta, noise, heavy)
+        piece = light if light is not None and residual(light) < residual(heavy) else heavy
+        out |= piece
+        left &= ~piece
     return out
