@@ -57,10 +57,7 @@ def test_the_lifted_relaxation_holds_the_hidden_solution():
     assert np.ptp(p.A @ x + p.v) <= 1e-12 * np.ptp(p.v)
 
 
-@pytest.mark.xfail(strict=True, raises=bl.InfeasibleDesign,
-                   reason="known defect (H19c): no start of the alternating search reaches Lustig's case 3 (a spring "
-                          "between two moving links) although its lifted relaxation holds the solution (test above); "
-                          "the verdict is not_found, and its message quotes the relaxation as 'needs a negative rate' "
-                          "because verdicts.infeasible is called on the lifted problem without solving it first")
 def test_lustig_case3_hidden_is_found_again():
+    """Lustig's case 3 (a spring between two moving links): no alternating start reaches it; the
+    nonlinear least-squares starts (bilinear.nls_starts) do, and the result is checked by its energies."""
     solve("lustig_case3")

@@ -8,6 +8,10 @@ edge midpoints and centre of the box for either end, and the ends recovered from
 problem (the moments ``k p_a``, ``k p_b`` and ``k p_a p_b^T`` as unknowns of their own: linear).
 Every start is tried and the best objective value is kept (not the first that balances).
 
+When no start balances, the real unknowns of the both-free springs (``log k``, ``p_a``, ``p_b``) are
+fitted by nonlinear least squares from :data:`NLS_STARTS` seeded random points of the box, the other
+candidates' variables projected out (:func:`nls_starts`); each fit's ends start the rounds again.
+
 The verdicts are honest: "impossible" only when the lifted problem (a relaxation: any design
 is a solution of it) has no solution even with rates of any sign; otherwise, when no start
 balances, the verdict is ``"not_found"``: a solution may exist, the search did not find it.
@@ -22,7 +26,7 @@ from .problem import columns, lp_constraints
 from .solver import column_norms, rank_of, solve
 from .verdicts import infeasible
 
-__all__ = ["search", "start_points", "lifted_ends"]
+__all__ = ["search", "start_points", "lifted_ends", "nls_starts"]
 
 #: alternations per start
 ROUNDS = 8
@@ -156,6 +160,19 @@ def search(design, blocks, both, q, objective, default_point, size: float):
             continue
         if best is None or value < best[0] * (1 - 1e-9):
             best = (value, p, sol, [(list(b.ends), b.free) for b in blocks])
+    if best is None:  # no alternating start balanced: start again from nonlinear least squares
+        for fixed, pts in nls_starts(design, blocks, both, q):
+            for b, pt in zip(both, pts):
+                b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
+                b.ends[fixed] = (b.ends[fixed][0], pt)
+                b.free = 1 - fixed
+            try:
+                value, p, sol = rounds(design, blocks, both, q, objective)
+            except InfeasibleDesign as err:
+                last = err
+                continue
+            if best is None or value < best[0] * (1 - 1e-9):
+                best = (value, p, sol, [(list(b.ends), b.free) for b in blocks])
     if best is not None:
         _restore(blocks, best[3])
         return best[1], best[2]
@@ -175,3 +192,56 @@ def search(design, blocks, both, q, objective, default_point, size: float):
         "point you choose, or a wider box")
     out.verdict, out.box = "not_found", getattr(err, "box", None)
     raise out
+
+
+#: random starts of the nonlinear least-squares fallback (seeded: the search is repeatable)
+NLS_STARTS = 24
+
+
+def nls_starts(design, blocks, both, q, keep: int = 4) -> list:
+    """Starts ``[(fixed end index, [point for each both-free spring])]`` from nonlinear least squares.
+
+    The energy of the both-free springs is fitted in their real unknowns ``(log k, p_a, p_b)`` so that,
+    with the other candidates' linear variables (of any sign) and what the design carries, it is
+    constant; the fits that come closest (at most ``keep``) give their ends, each end in turn, clipped
+    to the box. The rounds then solve the linear problem with the signs and boxes enforced."""
+    from scipy.optimize import least_squares
+
+    others = [b for b in blocks if b not in both]
+    p = columns(design, others, q)
+    Q = np.linalg.qr(p.A)[0] if p.nvar else np.zeros((len(q), 0))
+    poses, scale = p.poses, max(float(np.ptp(p.v)), p.load_spread, 1e-300)
+
+    def world(body, point):
+        x, y, a = poses[:, body, 0], poses[:, body, 1], poses[:, body, 2]
+        c, s = np.cos(a), np.sin(a)
+        return np.stack([x + c * point[0] - s * point[1], y + s * point[0] + c * point[1]], -1)
+
+    def residual(z):
+        r = p.v.copy()
+        for i, b in enumerate(both):
+            lk, ax, ay, bx, by = z[5 * i:5 * i + 5]
+            d = world(b.ends[0][0], (ax, ay)) - world(b.ends[1][0], (bx, by))
+            e = 0.5 * np.exp(lk) * (d * d).sum(-1)
+            r = r + e - e.mean()
+        return (r - Q @ (Q.T @ r)) / scale
+
+    rng = np.random.default_rng(0)
+    fits = []
+    for _ in range(NLS_STARTS):
+        z0 = []
+        for b in both:
+            (xl, xh), (yl, yh) = b.box
+            pts = rng.uniform((xl, yl, xl, yl), (xh, yh, xh, yh))
+            z0 += [np.log(scale / max((xh - xl) * (yh - yl), 1e-300)), *pts]
+        with np.errstate(all="ignore"):
+            fit = least_squares(residual, np.array(z0), method="lm", max_nfev=400)
+        if np.all(np.isfinite(fit.x)):
+            fits.append((float(np.ptp(residual(fit.x))), fit.x))
+    fits.sort(key=lambda f: f[0])
+    starts = []
+    for _, z in fits[:keep]:
+        for fixed in (0, 1):
+            starts.append((fixed, [_clip(tuple(z[5 * i + 1 + 2 * fixed:5 * i + 3 + 2 * fixed]), b.box)
+                                   for i, b in enumerate(both)]))
+    return starts
