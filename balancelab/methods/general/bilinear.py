@@ -186,8 +186,8 @@ def search(design, blocks, both, q, objective, default_point, size: float):
         raise last
     out = InfeasibleDesign(
         f"no balanced design found from these candidates (objective {objective!r}): the search over "
-        f"{len(start_points(design, blocks, both, q, default_point, size))} starts for the springs with both ends "
-        "free found none, but this is NOT proved impossible: the linear relaxation (the moments k p_a, k p_b, "
+        f"{len(start_points(design, blocks, both, q, default_point, size))} starts (and {NLS_STARTS} nonlinear "
+        "least-squares fits) for the springs with both ends free found none, but this is NOT proved impossible: the linear relaxation (the moments k p_a, k p_b, "
         f"k p_a p_b^T as unknowns) has a solution ({err.verdict!r}: {err}); try fixing one end of a spring at a "
         "point you choose, or a wider box")
     out.verdict, out.box = "not_found", getattr(err, "box", None)
@@ -195,7 +195,7 @@ def search(design, blocks, both, q, objective, default_point, size: float):
 
 
 #: random starts of the nonlinear least-squares fallback (seeded: the search is repeatable)
-NLS_STARTS = 24
+NLS_STARTS = 8
 
 
 def nls_starts(design, blocks, both, q, keep: int = 4) -> list:
@@ -235,7 +235,7 @@ def nls_starts(design, blocks, both, q, keep: int = 4) -> list:
             pts = rng.uniform((xl, yl, xl, yl), (xh, yh, xh, yh))
             z0 += [np.log(scale / max((xh - xl) * (yh - yl), 1e-300)), *pts]
         with np.errstate(all="ignore"):
-            fit = least_squares(residual, np.array(z0), method="lm", max_nfev=400)
+            fit = least_squares(residual, np.array(z0), method="lm", max_nfev=200)
         if np.all(np.isfinite(fit.x)):
             fits.append((float(np.ptp(residual(fit.x))), fit.x))
     fits.sort(key=lambda f: f[0])
