@@ -242,7 +242,9 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     ------
     InfeasibleDesign
         When no admissible solution exists; the message names the energy terms that
-        cannot be cancelled and the candidates that would need a negative value.
+        cannot be cancelled and the candidates that would need a negative value; ``err.verdict``
+        says which (``"limit"``: a rate outside ``1e-12..1e12`` N/m or a counter mass whose weight
+        exceeds ``1e12`` N would be needed, named with the limit).
 
     Examples
     --------
