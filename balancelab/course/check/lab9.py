@@ -82,8 +82,8 @@ def lab9_spring(spring) -> ExtensionSpring:
 
     Examples
     --------
-    >>> round(lab9_spring({"d": 2e-3, "D": "16 mm", "Na": 40, "F_i": 10.0}).k, 1)
-    618.3
+    >>> round(lab9_spring({"d": 2e-3, "D": "16 mm", "Na": 30, "F_i": 10.0}).k, 1)
+    1329.8
     """
     data = as_mapping(spring, ("d", "D", "Na", "F_i"), "your spring")
     d, D = (quantity(data[key], "length", f"{key} of your spring") for key in ("d", "D"))
