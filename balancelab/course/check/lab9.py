@@ -201,7 +201,8 @@ def _t91(answer, load):
     variation, tension = pulley_energy_variation(answer, load)
     if not math.isfinite(variation) or variation > LAB9_TOLERANCE:
         return (False, "Wound on your points, the cable does not balance your link: the energy is not constant.",
-                "Use your own link (task_numbers('9.1')), the eyelet at (0, 0.3) m and the range ±60°.")
+                "Use your own link (task_numbers('9.1')), the eyelet at (0, 0.3) m, the range ±60°, the design's "
+                "cable_length and turn, the clamped end last, and enough points (up to 500).")
     if tension.min() < spring.initial_tension * (1 - 1e-9):
         return False, "The spring goes slack (its tension falls below its initial tension).", \
             "Raise the smallest tension."
