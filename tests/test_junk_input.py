@@ -149,7 +149,7 @@ MANUAL = {
     "sleeve_lever": (realize.sleeve_lever, (), {"mass": 2.0, "length": 0.5, "b": 0.3, "c": 0.2, "free_length": 0.05}),
     "mount_normal_springs": (realize.mount_normal_springs, (_LEVER, 0.05), {"springs": [0], "margin": 0.1, "n": 50}),
     "balance_normal": (realize.balance_normal, (lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).replace(springs=[]),),
-                       {"springs": [((0, (0.0, 0.3)), (1, None))], "free_length": 0.05}),
+                       {"springs": [((0, (0.0, 0.3)), (1, (0.2, 0.0)))], "free_length": 0.05}),
 }
 
 #: public names that are not builders taking user input, with the reason
