@@ -12,7 +12,7 @@ from balancelab.methods.singh.scissors import scissors_lift
 from conftest import lab8_reference_springs
 from balancelab.course import check as ck
 from balancelab.course.check import Verdict, check, explain, tasks
-from balancelab.course.check import core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8
+from balancelab.course.check import core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, lab9
 from balancelab.methods.lecture.fourbar import fourbar_counterweights
 
 # ----------------------------------------------------------------- expected answers, derived by
@@ -128,6 +128,29 @@ def _lab8_shoulder_torque():
     return 0.02 * bl.G * (1.0 * 0.25 + 1.0 * 0.5)
 
 
+def _lab9_pulley(min_tension=45.0):
+    """The published link's pulley, made by the library; the judge winds the cable on its points itself."""
+    from balancelab.methods.practice.springs import ExtensionSpring
+
+    real = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
+    link = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
+    d = bl.realize.noncircular_pulley(link, spring_model=real, angle_range=(-math.pi / 3, math.pi / 3),
+                                      min_tension=min_tension, eyelet=(0.0, 0.3))
+    pitch, clamp = bl.realize.profile_part(d, n=400).pitch, d.springs[0].b.point
+    if np.hypot(*(pitch[0] - clamp)) < np.hypot(*(pitch[-1] - clamp)):
+        pitch = pitch[::-1]
+    return {"spring": {"d": 3e-3, "D": 24e-3, "Na": 60, "F_i": 40.0}, "points": pitch,
+            "cable_length": d.springs[0].cable.cable_length, "turn": d.springs[0].cable.turn}
+
+
+def _lab9_largest_tension():
+    # T_max^2 = T_min^2 + 2 k (V(60°) - V(-60°)), V = m g r sin(theta), by hand
+    from balancelab.methods.practice.springs import ExtensionSpring
+
+    k = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0).k   # the rate is chapter 8's, not the task
+    return math.sqrt(45.0 ** 2 + 2 * k * 2.0 * bl.G * 0.5 * math.sqrt(3))
+
+
 RIGHT = {
     "1.1": lambda: _lamp_r_c(),
     "1.2": lambda: sp.sympify("r*(2*m + m_l)/(2*m_c)"),
@@ -158,6 +181,9 @@ RIGHT = {
     "8.1": lab8_reference_springs,
     "8.2": _lab8_study,
     "8.3": _lab8_shoulder_torque,
+    "9.1": _lab9_pulley,
+    "9.2": _lab9_largest_tension,
+    "9.3": lambda: sp.sympify("-m*g*r*cos(theta)/sqrt(2*k*C - 2*k*m*g*r*sin(theta))"),
 }
 
 
@@ -385,7 +411,7 @@ def test_docstring_examples_of_the_lab_modules_run():
     import balancelab.course.grading
     import balancelab.course.labtools
 
-    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, balancelab.course.labtools,
+    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, lab9, balancelab.course.labtools,
                 balancelab.course.grading):
         result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, mod.__name__

@@ -147,6 +147,9 @@ MANUAL = {
     "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
     "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"tolerance": 1e-3}),
     "sleeve_lever": (realize.sleeve_lever, (), {"mass": 2.0, "length": 0.5, "b": 0.3, "c": 0.2, "free_length": 0.05}),
+    "mount_normal_springs": (realize.mount_normal_springs, (_LEVER, 0.05), {"springs": [0], "margin": 0.1, "n": 50}),
+    "balance_normal": (realize.balance_normal, (lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).replace(springs=[]),),
+                       {"springs": [((0, (0.0, 0.3)), (1, (0.2, 0.0)))], "free_length": 0.05}),
 }
 
 #: public names that are not builders taking user input, with the reason
@@ -165,7 +168,7 @@ EXEMPT = {
     "example_fourbar": "takes no argument", "lustig_case1": "takes no argument", "lustig_case2": "takes no argument",
     "lustig_case3": "takes no argument", "lustig_case4": "takes no argument",
     "NoncircularProfile": "built by noncircular_pulley from its synthesis (Chebyshev series); not a user-facing builder",
-    "sleeve_derivation": "takes no argument",
+    "sleeve_derivation": "takes no argument", "normal_spring_derivation": "takes no argument",
     "CableGeometry": "a result (NamedTuple)", "ProfilePart": "a result (NamedTuple)", "ProfileError": "an exception",
 }
 

@@ -175,7 +175,7 @@ def test_solution_notebooks_pass_nbval():
 # ------------------------------------------------------------------------- grading
 
 
-@pytest.mark.parametrize("lab", ["lab1", "lab7", "lab8"])
+@pytest.mark.parametrize("lab", ["lab1", "lab7", "lab8", "lab9"])
 def test_grading_solution_and_student_versions(lab, tmp_path):
     """The trusted grader gives a solution full marks and the untouched student version none.
 

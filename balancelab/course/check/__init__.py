@@ -18,7 +18,7 @@ A check never reveals the expected value and never raises: wrong types, NaN, a m
 unit or a wrong shape give a friendly :class:`Verdict` instead of a traceback.
 
 Layout: ``core`` (verdicts, the task registry, :func:`check`), ``answers`` (reading and
-judging answers) and one module per lab, ``lab1`` ... ``lab8``, holding that lab's data,
+judging answers) and one module per lab, ``lab1`` ... ``lab9``, holding that lab's data,
 builders and tasks. Expected values come from the library's methods and designs, never
 from formulas repeated here. A new task goes in its lab's module: a judge decorated with
 :func:`~.core.register_task` (id, title, answer variable, kind, what an answer looks
@@ -44,12 +44,13 @@ from .lab5 import LAB5_TECHNIQUE2, lab5_technique2
 from .lab6 import LAB6_BOARD, LAB6_SCISSORS, lab6_scissors
 from .lab7 import LAB7_LAMP, lamp_with_springs
 from .lab8 import LAB8_ARM, LAB8_QUANTILE_LIMIT, LAB8_TOLERANCES, built_arm, lab8_arm
+from .lab9 import LAB9_LINK, lab9_spring
 
 __all__ = ["Verdict", "Task", "check", "check_data", "set_student", "task_numbers", "encode_answer", "decode_answer", "DesignData", "tasks", "lab_tasks", "explain", "AnswerError", "register_task",
            "lab1_fourbar", "lab2_lever", "lab3_torque_error", "lab4_singh_arm", "lab5_technique2",
-           "lab6_scissors", "lamp_with_springs", "lab8_arm", "built_arm",
+           "lab6_scissors", "lamp_with_springs", "lab8_arm", "built_arm", "lab9_spring",
            "quantity", "vector", "point", "numeric", "numeric_vector", "symbolic",
            "as_mapping", "DESIGN_TOLERANCE", "design_balanced",
            "LAMP_ARM", "LAB1_FOURBAR", "LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "LAB3_LEVER", "PARTNER_SPRINGS",
            "LAB4_PARALLELOGRAM", "LAB4_SINGH", "LAB5_TECHNIQUE2", "LAB6_SCISSORS", "LAB6_BOARD",
-           "LAB7_LAMP", "LAB8_ARM", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT"]
+           "LAB7_LAMP", "LAB8_ARM", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB9_LINK"]

@@ -1,6 +1,6 @@
 """The core of the answer checks: verdicts and the task registry.
 
-:func:`register_task` is how a lab module (``lab1`` ... ``lab8``) declares a task and its
+:func:`register_task` is how a lab module (``lab1`` ... ``lab9``) declares a task and its
 judge; :func:`check` runs the judge on a student's answer and turns whatever happens
 (right, wrong, malformed, a crash) into a :class:`Verdict`. Reading and judging answers
 is :mod:`.answers`' job.
@@ -160,12 +160,12 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
 
     Examples
     --------
-    >>> @register_task("9.1", "the answer to everything", "x", "numeric", "the number 42")
+    >>> @register_task("99.1", "the answer to everything", "x", "numeric", "the number 42")
     ... def _judge(answer):
     ...     return answer == 42, "Checked.", "Try 42."
-    >>> check("9.1", 42).correct, check("9.1", 41).hint
+    >>> check("99.1", 42).correct, check("99.1", 41).hint
     (True, 'Try 42.')
-    >>> _ = _TASKS.pop("9.1")
+    >>> _ = _TASKS.pop("99.1")
     """
     if kind not in ("numeric", "symbolic", "design"):
         raise ValueError(f"kind must be 'numeric', 'symbolic' or 'design', got {kind!r}")

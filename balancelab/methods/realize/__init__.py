@@ -18,7 +18,9 @@ One module per concept:
   (the profile's geometry and the cable on it) and :mod:`.profile_export`,
   the profile as SVG, DXF and CSV files at true scale, checked as written (:mod:`.profile_check`);
 * :mod:`.sleeve`: a normal spring mounted between a sleeve pivoted at the anchor and a rod
-  sliding in it, which balances the lecture's link exactly (:func:`sleeve_lever`).
+  sliding in it, which balances the lecture's link exactly (:func:`sleeve_lever`);
+* :mod:`.normal_springs`: the same mount for every ZFL spring of any design
+  (:func:`mount_normal_springs`, :func:`balance_normal`, :func:`normal_spring_derivation`).
 
 Every name is importable from ``balancelab.methods.realize`` (``bl.realize``).
 """
@@ -31,6 +33,7 @@ from .profile import CableGeometry, NoncircularProfile, ProfileError
 from .noncircular import noncircular_pulley, spring_limits
 from .profile_export import ProfilePart, export_profile, profile_part
 from .sleeve import sleeve_derivation, sleeve_lever
+from .normal_springs import balance_normal, lamp_arm_normal_springs, mount_normal_springs, normal_spring_derivation
 
 __all__ = [
     "PulleyString",
@@ -54,4 +57,8 @@ __all__ = [
     "export_profile",
     "sleeve_lever",
     "sleeve_derivation",
+    "mount_normal_springs",
+    "balance_normal",
+    "normal_spring_derivation",
+    "lamp_arm_normal_springs",
 ]
