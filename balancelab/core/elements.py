@@ -19,7 +19,7 @@ weight that is ``m G y``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, Sequence, TypeAlias
 
 from .validation import body_index, finite_real, planar_point
 
@@ -30,6 +30,11 @@ G: float = 9.81
 
 
 _REALIZATIONS = ("coil", "gas", "pulley")
+
+#: a load of :class:`SymbolicParts`: ``(body, (x, y), (f_x, f_y))`` with sympy expressions
+SymbolicLoad = tuple[int, tuple[Any, Any], tuple[Any, Any]]
+#: a spring of :class:`SymbolicParts`: ``(k, free_length, (body, (x, y)), (body, (x, y)))``
+SymbolicSpring = tuple[Any, Any, tuple[int, tuple[Any, Any]], tuple[int, tuple[Any, Any]]]
 
 
 class _AttachmentFields(NamedTuple):
@@ -52,7 +57,11 @@ class Attachment(_AttachmentFields):
         return super().__new__(cls, body_index("attachment body", body), planar_point("attachment point", point))
 
 
-def _attachment(name: str, value) -> Attachment:
+#: what a spring end may be given as: an Attachment or a pair ``(body, (x, y))``
+AttachmentLike: TypeAlias = "Attachment | tuple[int, Sequence[float]]"
+
+
+def _attachment(name: str, value: AttachmentLike) -> Attachment:
     if isinstance(value, Attachment):
         return value
     try:
@@ -266,7 +275,11 @@ class Spring:
     a: Attachment
     b: Attachment
     name: str = ""
-    realization: str | Pulley = "coil"
+    realization: str | Pulley | CablePath = "coil"
+
+    if TYPE_CHECKING:  # the generated __init__ also takes plain (body, (x, y)) pairs for a and b
+        def __init__(self, k: float, free_length: float, a: AttachmentLike, b: AttachmentLike,
+                     name: str = "", realization: str | Pulley | CablePath = "coil") -> None: ...
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", finite_real("spring stiffness k (N/m)", self.k, positive=True))
@@ -312,7 +325,7 @@ class SymbolicParts:
     symbols); it is used only for :meth:`balancelab.Design.potential_energy_symbolic`.
     """
 
-    loads: tuple = ()
-    springs: tuple = ()
-    values: dict = field(default_factory=dict)
-    kinematics: object = None
+    loads: tuple[SymbolicLoad, ...] = ()
+    springs: tuple[SymbolicSpring, ...] = ()
+    values: dict[Any, float] = field(default_factory=dict)
+    kinematics: Any = None  # a Kinematics whose points are sympy expressions, or None

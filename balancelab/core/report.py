@@ -123,7 +123,7 @@ class BalanceReport:
     n: int
     load_scale: float = math.nan
     load_variation: float = math.nan
-    q_units: tuple = ()
+    q_units: tuple[str, ...] = ()
     cancelled: float = 0.0
     roundoff: float = 0.0
 
