@@ -74,8 +74,8 @@ def _immutable_message(cls: type[_D]) -> type[_D]:
     def __delattr__(self: object, key: str) -> None:
         raise FrozenInstanceError("a Design is immutable: use design.replace(...) to get a changed copy")
 
-    setattr(cls, "__setattr__", __setattr__)
-    setattr(cls, "__delattr__", __delattr__)
+    setattr(cls, "__setattr__", __setattr__)  # noqa: B010 (mypy refuses assigning to a method)
+    setattr(cls, "__delattr__", __delattr__)  # noqa: B010
     return cls
 
 
@@ -196,7 +196,7 @@ class Design(SymbolicMethods):
         """Bounds of the configuration coordinates, shape ``(dof, 2)`` (rad)."""
         return self.kinematics.q_range
 
-    def replace(self, **changes) -> "Design":
+    def replace(self, **changes) -> Design:
         """Return a copy with some constructor arguments changed (e.g. ``springs=...``).
 
         Parameters

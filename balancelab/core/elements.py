@@ -53,7 +53,7 @@ class Attachment(_AttachmentFields):
 
     __slots__ = ()
 
-    def __new__(cls, body: int, point) -> "Attachment":
+    def __new__(cls, body: int, point) -> Attachment:
         return super().__new__(cls, body_index("attachment body", body), planar_point("attachment point", point))
 
 

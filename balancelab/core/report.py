@@ -55,7 +55,7 @@ ROUND_OFF_ALLOWANCE: float = 1e-14
 #: and why, never balanced.
 MAX_ROUND_OFF_RATIO: float = 1e3
 
-_EXTENTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_EXTENTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 class Energy(NamedTuple):

@@ -70,9 +70,9 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
 
 
 def _cannot_assemble(crank, coupler, rocker, ground) -> str:
-    return ("this four-bar cannot assemble: with crank {:.4g} m, coupler {:.4g} m, rocker {:.4g} m "
-            "and ground {:.4g} m no crank angle closes the loop (each link must be shorter than "
-            "the sum of the other three)".format(crank, coupler, rocker, ground))
+    return (f"this four-bar cannot assemble: with crank {crank:.4g} m, coupler {coupler:.4g} m, rocker {rocker:.4g} m "
+            f"and ground {ground:.4g} m no crank angle closes the loop (each link must be shorter than "
+            "the sum of the other three)")
 
 
 def pivot_name(parameter: str, value: str) -> str:

@@ -464,7 +464,7 @@ class Drawing:
                                           W[g.joint_idx] if self.design.joints else (),
                                           getattr(self, "_label_dirs", None))
 
-    def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> "Drawing":
+    def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> Drawing:
         """Move the artists to configuration ``q`` (rad), optionally of another design.
 
         A design with the same structure (bodies, joints, springs and their

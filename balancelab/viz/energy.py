@@ -18,7 +18,7 @@ from ..core.design import Design
 from ..core.report import format_q, q_shown, q_units
 from ..core.validation import finite_real
 from .style import FONT, fit_title
-from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
+from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid
 
 __all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
            "sweep_path"]
@@ -304,7 +304,7 @@ class EnergyView:
             residual_ax.set_ylabel(angle_label(design, 1))
             residual_ax.set_title("residual generalized force", fontsize=FONT["title"])
 
-    def update(self, design: Design | None = None, *, report=None, q=None) -> "EnergyView":
+    def update(self, design: Design | None = None, *, report=None, q=None) -> EnergyView:
         """Recompute the curves (or map) for ``design`` and move the marker to ``q``.
 
         Parameters

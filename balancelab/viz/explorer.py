@@ -452,7 +452,7 @@ class Explorer:
         self._sliders = {}
         layout = w.Layout(width="420px")
         style = {"description_width": "110px"}
-        for name, (lo, hi, step, value) in self.params.items():
+        for name, (lo, hi, step, _value) in self.params.items():
             s = w.FloatSlider(value=self.values[name], min=lo, max=hi, step=step, description=name,
                               continuous_update=True, readout_format=".4g", layout=layout, style=style)
             s.observe(self._on_param(name), names="value")
@@ -528,7 +528,7 @@ class Explorer:
         try:
             for name, s in self._sliders.items():
                 s.value = self.values[name]
-            for i, (name, s) in enumerate(self._q_sliders.items()):
+            for i, s in enumerate(self._q_sliders.values()):
                 lo, hi = (float(v) for v in self._q_factor(i) * np.asarray(self.design.q_range[i]))
                 if (s.min, s.max) != (lo, hi):
                     if lo > s.max:

@@ -371,8 +371,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     if isinstance(answer, (str,)):
         try:
             expr = sp.sympify(answer, locals=dict(allowed))
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError):
-            raise AnswerError(f"{what.capitalize()} {_short(answer)} could not be read as a formula.", hint)
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError) as err:
+            raise AnswerError(f"{what.capitalize()} {_short(answer)} could not be read as a formula.", hint) from err
     elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
         expr = sp.sympify(answer)
     else:

@@ -104,7 +104,7 @@ def _student_arm(answer) -> Design:
     try:
         return lab4_singh_arm(ax)
     except (ValueError, TypeError) as e:
-        raise AnswerError(f"These free choices give no design: {e}", "Pick other values of a_x.")
+        raise AnswerError(f"These free choices give no design: {e}", "Pick other values of a_x.") from e
 
 
 @register_task("4.3", "minimum-preload 2R whose springs are soft and anchored close (open design)", "arm_design",

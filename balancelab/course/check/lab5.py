@@ -73,7 +73,7 @@ def _t53(answer):
     try:
         d = lab5_technique2(a["base"], h)
     except (ValueError, TypeError) as e:
-        raise AnswerError(f"This choice gives no design: {e}", "Try another h.")
+        raise AnswerError(f"This choice gives no design: {e}", "Try another h.") from e
     p = LAB5_TECHNIQUE2
     lo, hi = np.array(p["box"][0]), np.array(p["box"][1])
     ext = _spring_extent(d)

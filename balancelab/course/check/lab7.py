@@ -150,7 +150,7 @@ def lab7_slider_crank() -> Design:
     return lk.build(guess={"crank": 1.0})
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _slider_mass() -> float:
     d = balance(lab7_slider_crank(), counterweights=[("crank", None)], objective="min_mass", box=LAB7_SLIDER["box"])
     return float(d.parameters["counter_mass1"])

@@ -158,7 +158,7 @@ class SerialChain:
         return out
 
     @classmethod
-    def from_values(cls, n: int, topology, values: Mapping[str, float]) -> "SerialChain":
+    def from_values(cls, n: int, topology, values: Mapping[str, float]) -> SerialChain:
         """Build a chain from the paper-named numbers of :meth:`values`.
 
         Parameters

@@ -205,7 +205,7 @@ def _build(N: int) -> ChainConditions:
         star.append((Di / G, Ci / G))
     cs, ss = [c for c, _ in star], [s for _, s in star]
     zero = []
-    for body, (k, ax, ay, bx, by) in zip(bodies, springs):
+    for body, (_k, ax, ay, bx, by) in zip(bodies, springs):
         X, Y = point(body, ax, ay, cs, ss)
         zero += [X - bx, Y - by]
     balance = {t: c for t, c in _trig_normal_form(v_load + v_spring, C, S).items() if t != 1}
