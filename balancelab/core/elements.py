@@ -112,6 +112,10 @@ class Load:
     name: str = ""
     kind: str = "force"
 
+    if TYPE_CHECKING:  # the generated __init__ takes any pair of numbers (a list, an array) for point and force
+        def __init__(self, body: int, point: Sequence[float], force: Sequence[float], name: str = "",
+                     kind: str = "force") -> None: ...
+
     def __post_init__(self) -> None:
         object.__setattr__(self, "body", body_index("load body", self.body))
         object.__setattr__(self, "point", planar_point("load point", self.point))

@@ -202,7 +202,8 @@ class RowWriter:
     """
 
     def __init__(self, path: str | Path):
-        self.path, self.rows = Path(path), []
+        self.path = Path(path)
+        self.rows: list[GradeRow] = []
         self.cols = [t.id for t in _check.tasks()]
         self._f = self.path.open("w", newline="", encoding="utf-8")
         self._w = csv.writer(self._f)

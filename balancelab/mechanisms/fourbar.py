@@ -487,7 +487,7 @@ def fourbar_design(name: str, fourbar: FourBar, loads: Sequence[Load], springs: 
     lab.update(labels or {})
     kin = fourbar.kinematics if kinematics is None else kinematics
     return Design(name, ("ground", "crank", "coupler", "rocker"), fourbar.joints(), kin,
-                  loads, springs, labels=lab, parameters=parameters, reference=reference)
+                  loads, springs, labels=lab, parameters=parameters or {}, reference=reference)
 
 
 def coupler_curve(fourbar: FourBar, n: int = 721) -> np.ndarray:

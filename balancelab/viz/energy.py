@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..core.design import Design
@@ -19,6 +21,9 @@ from ..core.report import format_q, q_shown, q_units
 from ..core.validation import finite_real
 from .style import FONT, fit_title
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid
+
+if TYPE_CHECKING:
+    from matplotlib.image import AxesImage
 
 __all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
            "sweep_path"]
@@ -249,8 +254,8 @@ class EnergyView:
         #: the legend (1 dof, when asked for); it also carries the verdict, which then never
         #: covers a curve or the legend
         self.legend = None
-        self.image = None
-        self.residual_image = None
+        self.image: AxesImage | None = None  # the energy map (2 dof)
+        self.residual_image: AxesImage | None = None
         if design.dof != 2:
             self._init_curves(design, legend)
         else:
@@ -369,6 +374,7 @@ class EnergyView:
         self.scale = rep.scale if rep is not None else float(np.nanmax(np.abs(Z - self.mean)) or 1.0)
         # deviation from the mean in units of the energy scale: one fixed colour range
         # for every design, a single flat colour when balanced
+        assert self.image is not None  # _show_maps draws a 2-dof design, whose map _build made
         self.image.set_data((Z - self.mean) / self.scale)
         self.image.set_clim(-0.5, 0.5)
         if self.residual_image is not None:

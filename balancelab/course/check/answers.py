@@ -399,8 +399,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     f_e = sp.lambdify(syms, expected, "numpy")
     same = True
     for _ in range(6):
-        vals = rng.uniform(0.3, 2.0, len(syms))
-        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(vals, syms)]
+        drawn = rng.uniform(0.3, 2.0, len(syms))
+        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(drawn, syms)]
         a, e = complex(f_a(*vals)), complex(f_e(*vals))
         if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
             same = False

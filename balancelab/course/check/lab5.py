@@ -1,6 +1,8 @@
 """Lab 5, four-bars: the lecture's two-spring four-bar, Singh's four-bar, Deepak's technique 2."""
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ...core.design import Design
@@ -13,7 +15,7 @@ from .core import AnswerError, register_task
 __all__ = ["LAB5_TECHNIQUE2", "lab5_technique2"]
 
 #: Lab 5's spring-loaded four-bar (technique 2) and the box its springs must fit in (m, N/m).
-LAB5_TECHNIQUE2 = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
+LAB5_TECHNIQUE2: dict[str, Any] = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
 
 
 def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
