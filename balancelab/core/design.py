@@ -18,6 +18,7 @@ from types import MappingProxyType
 from typing import Any, ClassVar, Hashable, Mapping, Sequence, TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import report as _report
 from .elements import Joint, Load, Spring, SymbolicParts
@@ -196,7 +197,7 @@ class Design(SymbolicMethods):
         """Bounds of the configuration coordinates, shape ``(dof, 2)`` (rad)."""
         return self.kinematics.q_range
 
-    def replace(self, **changes) -> Design:
+    def replace(self, **changes: Any) -> Design:
         """Return a copy with some constructor arguments changed (e.g. ``springs=...``).
 
         Parameters
@@ -234,7 +235,7 @@ class Design(SymbolicMethods):
     _sk, _sl0, _scable = _packed("sk"), _packed("sl0"), _packed("scable")
 
     # ------------------------------------------------------------- kinematics
-    def check_q(self, q) -> np.ndarray:
+    def check_q(self, q: ArrayLike) -> np.ndarray:
         """``q`` as a float array of shape ``(..., dof)``, or a clear error (plain angles for one dof)."""
         q = real_array("q (angles in radians)", q)
         if self.dof == 1 and (q.ndim == 0 or q.shape[-1] != 1):
@@ -244,7 +245,7 @@ class Design(SymbolicMethods):
                              f"got shape {q.shape}")
         return q
 
-    def reachable(self, q) -> np.ndarray:
+    def reachable(self, q: ArrayLike) -> np.ndarray:
         """Boolean mask of the configurations the linkage can reach.
 
         Parameters
@@ -265,7 +266,7 @@ class Design(SymbolicMethods):
         """
         return self.kinematics.poses(self.check_q(q))[1]
 
-    def poses(self, q) -> np.ndarray:
+    def poses(self, q: ArrayLike) -> np.ndarray:
         """Pose ``(x, y, angle)`` of every body, shape ``(..., len(bodies), 3)``.
 
         Parameters
@@ -311,7 +312,7 @@ class Design(SymbolicMethods):
                 f"valid range: {rng}")
         return poses, cache
 
-    def world_points(self, q, attachments) -> np.ndarray:
+    def world_points(self, q: ArrayLike, attachments: Sequence[tuple[int, Sequence[float]]]) -> np.ndarray:
         """Global coordinates (m) of body points, shape ``(..., len(attachments), 2)``.
 
         Parameters
@@ -338,7 +339,7 @@ class Design(SymbolicMethods):
         x, y = body_to_world(poses, b, p)
         return np.stack([x, y], axis=-1)
 
-    def joint_error(self, q) -> np.ndarray:
+    def joint_error(self, q: ArrayLike) -> np.ndarray:
         """Largest gap (m) between the two sides of any joint, per configuration.
 
         Zero (to rounding) for a correct kinematic model; the tests use it to check the
@@ -437,7 +438,7 @@ class Design(SymbolicMethods):
                 vs.append(0.5 * self._sk[i] * ext * ext)
         return vl, vs
 
-    def element_energies(self, q) -> tuple[np.ndarray, np.ndarray]:
+    def element_energies(self, q: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
         """Energy (J) of each load and of each spring: arrays of shape ``(m, n_loads)``, ``(m, n_springs)``.
 
         ``q`` is flattened to ``m`` configurations of shape ``(m, dof)``.
@@ -447,7 +448,7 @@ class Design(SymbolicMethods):
         return (np.stack(vl, -1) if vl else np.zeros((len(q), 0)),
                 np.stack(vs, -1) if vs else np.zeros((len(q), 0)))
 
-    def potential_energy(self, q) -> Energy:
+    def potential_energy(self, q: ArrayLike) -> Energy:
         """Potential energy (J) of the loads, of the springs and in total.
 
         Parameters
@@ -483,7 +484,7 @@ class Design(SymbolicMethods):
         out[0] = out[1] + out[2]
         return Energy(*(row.reshape(lead) for row in out))
 
-    def generalized_force(self, q, h: float = 1e-6) -> np.ndarray:
+    def generalized_force(self, q: ArrayLike, h: float = 1e-6) -> np.ndarray:
         """``dV/dq`` (J/rad) by central differences, shape ``(..., dof)``.
 
         Near a limit of the range a one-sided difference is used.
@@ -513,7 +514,7 @@ class Design(SymbolicMethods):
             out[..., i] = (vp - vm) / np.where(den > 0, den, 1.0)
         return out
 
-    def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,
+    def balance_report(self, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                        tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
         """Check that the potential energy ``V`` is constant over many configurations.
 

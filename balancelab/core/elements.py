@@ -23,6 +23,9 @@ from typing import TYPE_CHECKING, Any, NamedTuple, Sequence, TypeAlias
 
 from .validation import body_index, finite_real, planar_point
 
+if TYPE_CHECKING:
+    import numpy as np
+
 __all__ = ["G", "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load"]
 
 #: Gravitational acceleration (m/s^2), acting along -y.
@@ -129,7 +132,7 @@ class Load:
         return -self.force[1] / G
 
 
-def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "weight") -> Load:
+def gravity_load(body: int, point: Sequence[float], mass: float, name: str = "", kind: str = "weight") -> Load:
     """Return the weight of a mass ``mass`` (kg) at ``point`` of ``body`` as a :class:`Load`.
 
     Parameters
@@ -222,7 +225,7 @@ class CablePath:
     Instances compare and hash by identity.
     """
 
-    def length(self, pose_a, pose_b):
+    def length(self, pose_a: np.ndarray, pose_b: np.ndarray) -> np.ndarray:
         """Length (m) between the spring's load points, from the poses ``(x, y, angle)`` of its bodies.
 
         Parameters

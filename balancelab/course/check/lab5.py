@@ -44,7 +44,7 @@ def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
 def _spring_extent(design: Design, n: int = 300) -> np.ndarray:
     """Bounding box ``[[xmin, ymin], [xmax, ymax]]`` (m) of every spring end over ``n`` configurations."""
     q = design.sample(n)
-    pts = [design.world_points(q, [tuple(at)]).reshape(-1, 2) for s in design.springs for at in (s.a, s.b)]
+    pts = [design.world_points(q, [at]).reshape(-1, 2) for s in design.springs for at in (s.a, s.b)]
     P = np.concatenate(pts)
     return np.array([P.min(axis=0), P.max(axis=0)])
 
