@@ -121,7 +121,7 @@ class Cgroup:
     >>> cg.remove()
     """
 
-    def __init__(self, caps: Caps):
+    def __init__(self, caps: Caps) -> None:
         self.dirs: dict[str, Path] = {}
         parents = _parents()
         if not parents:

@@ -201,7 +201,7 @@ class RowWriter:
     'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,attempts'
     """
 
-    def __init__(self, path: str | Path):
+    def __init__(self, path: str | Path) -> None:
         self.path = Path(path)
         self.rows: list[GradeRow] = []
         self.cols = [t.id for t in _check.tasks()]

@@ -151,7 +151,7 @@ class FourBarKinematics(Kinematics):
     """
 
     def __init__(self, A: Point, B: Point, crank: float, coupler: float, rocker: float, branch: int = 1,
-                 symbolic: str = "loop", circuit: float | None = None):
+                 symbolic: str = "loop", circuit: float | None = None) -> None:
         self.A = np.array(planar_point("pivot A", A))
         self.B = np.array(planar_point("pivot B", B))
         self.r2 = finite_real("crank length (m)", crank, positive=True)

@@ -125,7 +125,7 @@ class Geometry:
     [0.5, 0.0]
     """
 
-    def __init__(self, design: Design):
+    def __init__(self, design: Design) -> None:
         self.design = design
         self.body_pts = _body_points(design)
         att: list = []
@@ -271,7 +271,7 @@ class Drawing:
     """
 
     def __init__(self, design: Design, q=None, ax=None, *, labels: bool = True, color: str | None = None,
-                 limits: bool = True, linewidth: float = 3.0, alpha: float = 1.0):
+                 limits: bool = True, linewidth: float = 3.0, alpha: float = 1.0) -> None:
         self.ax = new_axes(ax)
         self.show_labels = bool(labels)
         self.color = color or STYLE["link"]

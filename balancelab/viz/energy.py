@@ -241,7 +241,7 @@ class EnergyView:
     """
 
     def __init__(self, design: Design, ax=None, *, n: int | None = None, report=None,
-                 q=None, residual_ax=None, legend: bool = True, title: bool = True):
+                 q=None, residual_ax=None, legend: bool = True, title: bool = True) -> None:
         check_design(design)
         self.path = design.dof > 2  # curves along sweep_path instead of a map
         self.ax = new_axes(ax, figsize=(5.0, 3.4))

@@ -166,7 +166,7 @@ class Explorer:
 
     def __init__(self, factory: Callable, params: Mapping | None = None, q=True, *,
                  fixed: Mapping | None = None, figsize=FIGSIZE, dpi: float = DPI,
-                 labels: bool = True, report_samples: int = 1000):
+                 labels: bool = True, report_samples: int = 1000) -> None:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
 

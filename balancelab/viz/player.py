@@ -150,7 +150,7 @@ class Player:
         Number of frames it holds.
     """
 
-    def __init__(self, html: str, frames: int):
+    def __init__(self, html: str, frames: int) -> None:
         self.html, self.frames = html, int(frames)
 
     def _repr_html_(self) -> str:

@@ -81,7 +81,7 @@ class AnswerError(ValueError):
     ('k must be positive.', 'A spring rate is > 0 N/m.')
     """
 
-    def __init__(self, message: str, hint: str = ""):
+    def __init__(self, message: str, hint: str = "") -> None:
         super().__init__(message)
         self.hint = hint
 

@@ -83,7 +83,7 @@ class LinkageKinematics(Kinematics):
 
     def __init__(self, nbodies: int, joints: Sequence[Joint], driving: Sequence[int] | None = None,
                  guess: Mapping[int, float] | None = None, names: Sequence[str] | None = None,
-                 sliders: Sequence[Slider] = (), strokes: Sequence | None = None):
+                 sliders: Sequence[Slider] = (), strokes: Sequence | None = None) -> None:
         self.nbodies = int(nbodies)
         self.joints = tuple(Joint(*j) for j in joints)
         self.sliders = tuple(p if isinstance(p, Slider) else Slider(*p) for p in sliders)

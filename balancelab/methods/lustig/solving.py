@@ -48,7 +48,7 @@ class SolutionFamily:
     (0.0872, 0.1125)
     """
 
-    def __init__(self, unknowns: tuple, free: tuple, expressions: dict):
+    def __init__(self, unknowns: tuple, free: tuple, expressions: dict) -> None:
         self.unknowns = tuple(unknowns)
         self.free = tuple(free)
         self.expressions = dict(expressions)
