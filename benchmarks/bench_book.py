@@ -129,7 +129,7 @@ def first_visit_weights(site: Path = SITE, figures: bool = False, gzip_text: boo
                 ctx = browser.new_context()
                 page = ctx.new_page()
                 sizes: list[int] = []
-                page.on("requestfinished", lambda r: sizes.append(
+                page.on("requestfinished", lambda r, sizes=sizes: sizes.append(
                     _served(r.url, r.sizes()["responseBodySize"], site, gzip_text)))
                 page.goto(f"http://127.0.0.1:{httpd.server_address[1]}/{rel}", wait_until="networkidle")
                 shown = 0 if figures else sum(len(m) for m in _FIGURE.findall(page_file.read_text(encoding="utf-8")))

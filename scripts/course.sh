@@ -39,6 +39,14 @@ case "$cmd" in
         ;;
     test)
         setup
+        # Lint and type checks first (configured in pyproject.toml; README, "Lint and types"): either
+        # failing fails the command. BALANCELAB_SKIP_STATIC=1 skips both (a quick local re-run of tests).
+        if [ "${BALANCELAB_SKIP_STATIC:-0}" != 1 ]; then
+            log "ruff check (lint)"
+            "$PY" -m ruff check
+            log "mypy (types)"
+            "$PY" -m mypy
+        fi
         log "running the test suite on ${BALANCELAB_TEST_WORKERS:-2} workers"
         # One worker builds the site and runs the browser tests (the "site" group, see tests/conftest.py),
         # the other takes the library, labs and grading tests. BALANCELAB_TEST_WORKERS=0 runs in one process.

@@ -184,7 +184,6 @@ def test_the_printable_course_has_every_chapter_its_figures_and_nothing_cut(site
     assert report["cut"] == [], report["cut"][:10]
     assert [c["page"] for c in report["chapters"]] == CHAPTERS
     reader = pypdf.PdfReader(str(pdf))
-    text = " ".join(" ".join((page.extract_text() or "").split()) for page in reader.pages)
     images = sum(len(page.images) for page in reader.pages)
     def titles(items):
         for item in items:
@@ -671,9 +670,10 @@ def test_every_page_in_a_browser(site, server, browser, width):
         page = ctx.new_page()
         console: list[str] = []
         bad: list[str] = []
-        page.on("console", lambda m: console.append(m.text) if m.type == "error" else None)
-        page.on("pageerror", lambda e: console.append(f"uncaught: {e}"))
-        page.on("response", lambda r: bad.append(f"{r.status} {r.url}") if r.status >= 400 else None)
+        # each handler binds this page's lists (a late event of an earlier page must not land in this one's)
+        page.on("console", lambda m, console=console: console.append(m.text) if m.type == "error" else None)
+        page.on("pageerror", lambda e, console=console: console.append(f"uncaught: {e}"))
+        page.on("response", lambda r, bad=bad: bad.append(f"{r.status} {r.url}") if r.status >= 400 else None)
         url = urljoin(server, rel)
         resp = page.goto(url, wait_until="load")
         where = f"{rel} at {width} px"

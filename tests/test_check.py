@@ -361,7 +361,7 @@ def test_lab_builders_balance_exactly_when_designed():
     d = ck.lab2_lever(300.0, (0.3, 0.0), (0.0, 0.2))
     rep = d.balance_report(n=1000)
     assert rep.balanced and rep.n == 1000
-    for name in ("k",):
+    for _name in ("k",):
         s = d.springs[0]
         worse = d.replace(springs=[bl.Spring(s.k * (1 + 1e-3), s.free_length, s.a, s.b)])
         assert not worse.balance_report().balanced

@@ -212,7 +212,7 @@ def test_sliders_are_named_described_and_the_report_is_live():
     spec = json.loads(re.search(r"var spec = (\{.*?\}), tries", js, re.S).group(1))
     # every slider, by its visible label, with a description that gives its range
     assert [s[1] for s in spec["sliders"]] == [s.description for s in sliders]
-    for (cls, label, text), s in zip(spec["sliders"], sliders):
+    for (cls, _label, text), s in zip(spec["sliders"], sliders):
         assert cls in s._dom_classes and s.tooltip == text
         assert f"from {s.min:.4g}" in text.replace(".0 ", " ") or f"from {s.min:.1f}" in text, text
     assert "aria-live" in js and "role" in js and spec["report"] in ex._report_html._dom_classes

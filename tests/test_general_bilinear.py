@@ -1,5 +1,4 @@
 """Springs with both ends free: never a false "impossible", and the best over the starts is kept."""
-import numpy as np
 import pytest
 
 import balancelab as bl

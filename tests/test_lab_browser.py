@@ -223,7 +223,7 @@ def test_lab_explorer_by_keyboard_alone(jupyterlab):
                 const i = nb.widgets.findIndex(c => c.node.querySelector('.bl-explorer'));
                 nb.activeCellIndex = i; nb.mode = 'command'; nb.activeCell.node.focus();
             }""")
-            for presses in range(1, 61):
+            for _presses in range(1, 61):
                 page.keyboard.press("Tab")
                 handle = page.evaluate(FOCUSED_HANDLE)
                 if handle and handle["name"] == "r_c":

@@ -27,11 +27,25 @@ def _tree(path: Path) -> ast.Module:
     return ast.parse(path.read_text(encoding="utf-8"))
 
 
-def _imports(path: Path):
-    """``(target module, imported names)`` of every balancelab import in ``path``, made absolute."""
+def _typing_only(tree: ast.Module) -> set[int]:
+    """Ids of the import nodes under ``if TYPE_CHECKING:``: annotations only, never executed."""
+    out: set[int] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
+            out.update(id(n) for stmt in node.body for n in ast.walk(stmt))
+    return out
+
+
+def _imports(path: Path, typing: bool = True):
+    """``(target module, imported names)`` of every balancelab import in ``path``, made absolute;
+    with ``typing=False`` not those for type checkers only (under ``if TYPE_CHECKING:``, never run)."""
     here = _name(path)
     package = here if path.name == "__init__.py" else here.rpartition(".")[0]
-    for node in ast.walk(_tree(path)):
+    tree = _tree(path)
+    skip = set() if typing else _typing_only(tree)
+    for node in ast.walk(tree):
+        if id(node) in skip:
+            continue
         if isinstance(node, ast.ImportFrom):
             if node.level:
                 base = package.split(".")
@@ -132,12 +146,13 @@ def test_method_families_import_only_the_families_they_declare():
 
 
 def test_no_module_import_cycle():
-    """Module-level imports (and imports hidden inside functions) form no cycle."""
+    """Module-level imports (and imports hidden inside functions) form no cycle; an import for type
+    checkers only (``if TYPE_CHECKING:``, the package's own annotations) never runs, so it cannot."""
     graph = {}
     for path in MODULES:
         name = _name(path)
         targets = set()
-        for target, names in _imports(path):
+        for target, names in _imports(path, typing=False):
             targets.add(target)
             targets.update(f"{target}.{n}" for n in names)    # "from .pkg import module"
         graph[name] = {t for t in targets if t in {_name(p) for p in MODULES} and t != name

@@ -30,7 +30,7 @@ def _line_facts(zfl: bl.Design, mounted: bl.Design, q):
         A, C = world(*old.a), world(*old.b)
         P, R = world(*new.a), world(*new.b)
         u = (C - A) / np.linalg.norm(C - A, axis=-1)[:, None]
-        cross = lambda v: u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]  # noqa: E731
+        cross = lambda v, u=u: u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]  # noqa: E731
         off_line = max(np.abs(cross(P - A)).max(), np.abs(cross(R - A)).max())
         length = np.linalg.norm(R - P, axis=-1)
         out.append((off_line, np.abs(length - np.linalg.norm(C - A, axis=-1) - new.free_length).max()))

@@ -196,7 +196,7 @@ def test_every_selected_spring_survives_its_hooks_and_the_bare_choice_does_not()
     for cycles in (None, 1e5):
         hooked = se.select_springs(lamp, 0.1, n=41, cycles=cycles)
         bare = se.select_springs(lamp, 0.1, n=41, cycles=cycles, family=se.spring_family(hooks=False))
-        for (name, c), (_, longest) in zip(hooked.choices.items(), strokes):
+        for (_name, c), (_, longest) in zip(hooked.choices.items(), strokes):
             s = c.spring
             assert s.hooks and s.k * longest <= s.max_force(cycles) * (1 + 1e-12)
             for where, stress in s.stresses(s.k * longest).items():

@@ -23,7 +23,7 @@ def test_catalog_is_the_registry_in_course_order():
 
 
 def test_every_example_names_its_family_and_counter_examples_are_marked():
-    for name, ex in registry.examples().items():
+    for _name, ex in registry.examples().items():
         assert ex.family in registry.FAMILIES and ex.function.__module__.startswith("balancelab.methods")
     unbalanced = {n for n, e in registry.examples().items() if not e.expected_balanced}
     assert unbalanced == {"single_link_ordinary_spring", "approximate_spring_lever",

@@ -9,6 +9,7 @@ through the kinematics is found too. Layer: core.
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 __all__ = ["EXACT", "MAX_ENUMERATED", "null_subset"]
 
@@ -35,7 +36,7 @@ def _subsets(n: int) -> np.ndarray:
     return bits[bits.sum(1) >= 2]
 
 
-def null_subset(energies, eta: float = EXACT) -> np.ndarray:
+def null_subset(energies: ArrayLike, eta: float = EXACT) -> np.ndarray:
     """The largest part of a design made of null sets: columns of ``energies`` that split into sets
     whose energies each sum to a constant, their own spreads adding up to the most.
 

@@ -11,16 +11,22 @@ and derived symbolically (:meth:`Design.potential_energy_symbolic`,
 """
 from __future__ import annotations
 
+import dataclasses
+from dataclasses import KW_ONLY, FrozenInstanceError, dataclass, field
+from functools import cached_property
 from types import MappingProxyType
-from typing import Mapping, Sequence
+from typing import Any, ClassVar, Hashable, Mapping, Sequence, TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-from . import report as _report, symbolic as _symbolic
+from . import report as _report
 from .elements import Joint, Load, Spring, SymbolicParts
 from .errors import UnreachableConfiguration
 from .kinematics import Kinematics, body_to_world, joint_gaps, spread
+from .packed import PackedElements, packed_field as _packed, pack_elements
 from .report import BALANCE_TOLERANCE, BalanceReport, Energy
+from .symbolic import SymbolicMethods
 from .validation import positive_int, real_array, sequence_of, step_size
 
 __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BALANCE_TOLERANCE"]
@@ -28,8 +34,10 @@ __all__ = ["Design", "Energy", "BalanceReport", "UnreachableConfiguration", "BAL
 _CHUNK = 16384  # configurations evaluated at once by potential_energy
 
 
-_FIELDS = ("name", "bodies", "joints", "kinematics", "loads", "springs", "symbolic", "labels",
-           "parameters", "reference")
+#: a named point of a figure: ``(body, local point (m))``
+Label = tuple[int, tuple[float, float]]
+
+_D = TypeVar("_D")
 
 
 def _check_items(loads, springs, joints, nb: int) -> None:
@@ -52,7 +60,29 @@ def _check_items(loads, springs, joints, nb: int) -> None:
                 raise ValueError(f"joint {j} names body {b}; bodies are 0..{nb - 1}")
 
 
-class Design:
+def _immutable_message(cls: type[_D]) -> type[_D]:
+    """Make a frozen dataclass's refusal to change a field say how to get a changed copy.
+
+    ``dataclass(frozen=True)`` forbids defining ``__setattr__`` in the class body; its generated
+    ``__init__`` sets the fields with ``object.__setattr__``, so replacing the two methods after
+    the decorator only changes the error message (still a ``FrozenInstanceError``, an
+    ``AttributeError``).
+    """
+    def __setattr__(self: object, key: str, value: object) -> None:
+        raise FrozenInstanceError(f"a Design is immutable: use design.replace({key}=...) to get a "
+                                  "changed copy")
+
+    def __delattr__(self: object, key: str) -> None:
+        raise FrozenInstanceError("a Design is immutable: use design.replace(...) to get a changed copy")
+
+    setattr(cls, "__setattr__", __setattr__)  # noqa: B010 (mypy refuses assigning to a method)
+    setattr(cls, "__delattr__", __delattr__)  # noqa: B010
+    return cls
+
+
+@_immutable_message
+@dataclass(frozen=True, eq=False, repr=False)
+class Design(SymbolicMethods):
     """A planar linkage with its loads and springs, balanced or not.
 
     Parameters
@@ -90,41 +120,48 @@ class Design:
     83.3333
     """
 
-    #: largest joint gap (m) accepted between the kinematics and the declared joints
-    JOINT_TOLERANCE = 1e-9
+    name: str
+    bodies: Sequence[str]
+    joints: Sequence[Joint]
+    kinematics: Kinematics
+    loads: Sequence[Load] = ()
+    springs: Sequence[Spring] = ()
+    _: KW_ONLY
+    symbolic: SymbolicParts | None = None
+    labels: Mapping[str, Label] = field(default_factory=dict)
+    parameters: Mapping[str, float] = field(default_factory=dict)
+    reference: str = ""
+    _sym_cache: dict[Hashable, Any] = field(init=False, repr=False, default_factory=dict)
 
-    def __init__(self, name: str, bodies: Sequence[str], joints: Sequence[Joint],
-                 kinematics: Kinematics, loads: Sequence[Load] = (), springs: Sequence[Spring] = (),
-                 *, symbolic: SymbolicParts | None = None, labels: Mapping | None = None,
-                 parameters: Mapping[str, float] | None = None, reference: str = ""):
-        bodies = tuple(str(b) for b in bodies)
+    #: largest joint gap (m) accepted between the kinematics and the declared joints
+    JOINT_TOLERANCE: ClassVar[float] = 1e-9
+
+    def __post_init__(self) -> None:
+        """Check the fields and store them as tuples and read-only mappings."""
+        bodies = tuple(str(b) for b in self.bodies)
         nb = len(bodies)
         if nb < 2:
             raise ValueError("bodies must name the ground and at least one moving body")
+        kinematics = self.kinematics
         if not isinstance(kinematics, Kinematics):
             raise TypeError("kinematics must be a balancelab Kinematics (see balancelab.mechanisms), "
                             f"got {type(kinematics).__name__}")
         if kinematics.nbodies != nb:
             raise ValueError(f"kinematics describes {kinematics.nbodies} bodies but {nb} are named")
-        joints = tuple(Joint(*j) for j in joints)
-        loads, springs = sequence_of("loads", loads, Load), sequence_of("springs", springs, Spring)
+        joints = tuple(Joint(*j) for j in self.joints)
+        loads = sequence_of("loads", self.loads, Load)
+        springs = sequence_of("springs", self.springs, Spring)
         _check_items(loads, springs, joints, nb)
-        init = object.__setattr__
-        for key, value in (("name", str(name)), ("bodies", bodies), ("joints", joints),
-                           ("kinematics", kinematics), ("loads", loads), ("springs", springs),
-                           ("symbolic", symbolic), ("labels", MappingProxyType(dict(labels or {}))),
-                           ("parameters", MappingProxyType(dict(parameters or {}))),
-                           ("reference", str(reference)), ("_sym_cache", {})):
-            init(self, key, value)
-        self._pack()
+        init = object.__setattr__  # the dataclass idiom for normalizing a frozen field
+        init(self, "name", str(self.name))
+        init(self, "bodies", bodies)
+        init(self, "joints", joints)
+        init(self, "loads", loads)
+        init(self, "springs", springs)
+        init(self, "labels", MappingProxyType(dict(self.labels or {})))
+        init(self, "parameters", MappingProxyType(dict(self.parameters or {})))
+        init(self, "reference", str(self.reference))
         self._check_joints()
-
-    def __setattr__(self, key, value):
-        raise AttributeError(f"a Design is immutable: use design.replace({key}=...) to get a changed "
-                             "copy")
-
-    def __delattr__(self, key):
-        raise AttributeError("a Design is immutable: use design.replace(...) to get a changed copy")
 
     def _check_joints(self) -> None:
         """The kinematics must close every declared joint (gap <= JOINT_TOLERANCE)."""
@@ -160,7 +197,7 @@ class Design:
         """Bounds of the configuration coordinates, shape ``(dof, 2)`` (rad)."""
         return self.kinematics.q_range
 
-    def replace(self, **changes) -> "Design":
+    def replace(self, **changes: Any) -> Design:
         """Return a copy with some constructor arguments changed (e.g. ``springs=...``).
 
         Parameters
@@ -180,35 +217,30 @@ class Design:
         >>> heavier.balance_report().balanced
         False
         """
-        unknown = set(changes) - set(_FIELDS)
+        names = tuple(f.name for f in dataclasses.fields(self) if f.init)
+        unknown = set(changes) - set(names)
         if unknown:
-            raise TypeError(f"replace() got unknown fields {sorted(unknown)}; a Design has {_FIELDS}")
-        args = {key: getattr(self, key) for key in _FIELDS}
-        if "loads" in changes or "springs" in changes:
-            args["symbolic"] = None
-        args.update(changes)
-        return Design(**args)
+            raise TypeError(f"replace() got unknown fields {sorted(unknown)}; a Design has {names}")
+        if ("loads" in changes or "springs" in changes) and "symbolic" not in changes:
+            changes["symbolic"] = None  # the symbolic parts describe the old loads and springs
+        return dataclasses.replace(self, **changes)
 
-    def _pack(self) -> None:
-        """Arrays of the loads and springs for the vectorized energy (set once: a Design is immutable)."""
-        L, S = self.loads, self.springs
-        arrays = dict(
-            _lb=np.array([ld.body for ld in L], dtype=int),
-            _lp=np.array([ld.point for ld in L], dtype=float).reshape(-1, 2),
-            _lf=np.array([ld.force for ld in L], dtype=float).reshape(-1, 2),
-            _sab=np.array([s.a.body for s in S], dtype=int),
-            _sap=np.array([s.a.point for s in S], dtype=float).reshape(-1, 2),
-            _sbb=np.array([s.b.body for s in S], dtype=int),
-            _sbp=np.array([s.b.point for s in S], dtype=float).reshape(-1, 2),
-            _sk=np.array([s.k for s in S], dtype=float),
-            _sl0=np.array([s.free_length for s in S], dtype=float),
-            _scable=tuple(s.cable for s in S))
-        for key, value in arrays.items():
-            object.__setattr__(self, key, value)
-        object.__setattr__(self, "_ref", _report.reference_point(self))
+    @cached_property
+    def _arrays(self) -> PackedElements:
+        """The loads and springs as arrays for the vectorized energy (once: a Design is immutable)."""
+        return pack_elements(self.loads, self.springs)
+
+    _lb, _lp, _lf = _packed("lb"), _packed("lp"), _packed("lf")
+    _sab, _sap, _sbb, _sbp = _packed("sab"), _packed("sap"), _packed("sbb"), _packed("sbp")
+    _sk, _sl0, _scable = _packed("sk"), _packed("sl0"), _packed("scable")
+
+    @cached_property
+    def _ref(self) -> np.ndarray:
+        """The ground point (m) about which element energies are taken (see ``report.reference_point``)."""
+        return _report.reference_point(self)
 
     # ------------------------------------------------------------- kinematics
-    def check_q(self, q) -> np.ndarray:
+    def check_q(self, q: ArrayLike) -> np.ndarray:
         """``q`` as a float array of shape ``(..., dof)``, or a clear error (plain angles for one dof)."""
         q = real_array(f"q ({_report.q_meaning(self)})", q)
         if self.dof == 1 and (q.ndim == 0 or q.shape[-1] != 1):
@@ -218,7 +250,7 @@ class Design:
                              f"got shape {q.shape}")
         return q
 
-    def reachable(self, q) -> np.ndarray:
+    def reachable(self, q: ArrayLike) -> np.ndarray:
         """Boolean mask of the configurations the linkage can reach.
 
         Parameters
@@ -239,7 +271,7 @@ class Design:
         """
         return self.kinematics.poses(self.check_q(q))[1]
 
-    def poses(self, q) -> np.ndarray:
+    def poses(self, q: ArrayLike) -> np.ndarray:
         """Pose ``(x, y, angle)`` of every body, shape ``(..., len(bodies), 3)``.
 
         Parameters
@@ -285,7 +317,7 @@ class Design:
                 f"valid range: {rng}")
         return poses, cache
 
-    def world_points(self, q, attachments) -> np.ndarray:
+    def world_points(self, q: ArrayLike, attachments: Sequence[tuple[int, Sequence[float]]]) -> np.ndarray:
         """Global coordinates (m) of body points, shape ``(..., len(attachments), 2)``.
 
         Parameters
@@ -312,7 +344,7 @@ class Design:
         x, y = body_to_world(poses, b, p)
         return np.stack([x, y], axis=-1)
 
-    def joint_error(self, q) -> np.ndarray:
+    def joint_error(self, q: ArrayLike) -> np.ndarray:
         """Largest gap (m) between the two sides of any joint, per configuration.
 
         Zero (to rounding) for a correct kinematic model; the tests use it to check the
@@ -412,7 +444,7 @@ class Design:
                 vs.append(0.5 * self._sk[i] * ext * ext)
         return vl, vs
 
-    def element_energies(self, q) -> tuple[np.ndarray, np.ndarray]:
+    def element_energies(self, q: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
         """Energy (J) of each load and of each spring: arrays of shape ``(m, n_loads)``, ``(m, n_springs)``.
 
         ``q`` is flattened to ``m`` configurations of shape ``(m, dof)``. A load's energy is taken
@@ -425,7 +457,7 @@ class Design:
         return (np.stack(vl, -1) if vl else np.zeros((len(q), 0)),
                 np.stack(vs, -1) if vs else np.zeros((len(q), 0)))
 
-    def potential_energy(self, q) -> Energy:
+    def potential_energy(self, q: ArrayLike) -> Energy:
         """Potential energy (J) of the loads, of the springs and in total.
 
         Parameters
@@ -462,7 +494,7 @@ class Design:
         out[0] = out[1] + out[2]
         return Energy(*(row.reshape(lead) for row in out))
 
-    def generalized_force(self, q, h: float = 1e-6) -> np.ndarray:
+    def generalized_force(self, q: ArrayLike, h: float = 1e-6) -> np.ndarray:
         """``dV/dq`` (J/rad) by central differences, shape ``(..., dof)``.
 
         Near a limit of the range a one-sided difference is used.
@@ -490,7 +522,7 @@ class Design:
             out[..., i] = _report.energy_change(self, qp, qm) / np.where(den > 0, den, 1.0)
         return out
 
-    def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,
+    def balance_report(self, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                        tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
         """Check that the potential energy ``V`` is constant over many configurations.
 
@@ -525,76 +557,3 @@ class Design:
         True
         """
         return _report.balance_report(self, q, n=n, seed=seed, tolerance=tolerance)
-
-    # --------------------------------------------------------------- symbolic
-    def potential_energy_symbolic(self, parametric: bool = True, split: bool = False):
-        """The potential energy as a sympy expression in the configuration angles.
-
-        Parameters
-        ----------
-        parametric : bool
-            Use the method's symbolic design parameters (when it has them, see
-            ``design.symbolic.values``); otherwise the numbers of this design.
-        split : bool
-            Return ``(load part, spring part)`` instead of their sum.
-
-        Returns
-        -------
-        sympy.Expr or tuple of sympy.Expr
-
-        Examples
-        --------
-        >>> import balancelab as bl
-        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
-        >>> d.potential_energy_symbolic()
-        W*l*sin(theta) + k*(a_x**2*cos(theta)**2 + (a_x*sin(theta) - b_y)**2)/2
-        """
-        return _symbolic.potential_energy_symbolic(self, parametric, split)
-
-    def trig_coefficients(self, parametric: bool = True) -> dict:
-        """Coefficients of the potential energy in a unique trigonometric form.
-
-        The energy is expanded into a polynomial in ``cos(q_i)`` and ``sin(q_i)`` and
-        reduced with ``sin^2 = 1 - cos^2``; in that normal form it is constant exactly when
-        every coefficient other than the constant term vanishes.
-
-        Returns
-        -------
-        dict
-            Maps each trigonometric monomial (a sympy expression, ``1`` for the constant)
-            to its coefficient.
-        """
-        return _symbolic.trig_coefficients(self, parametric)
-
-    def balance_conditions(self, parametric: bool = True) -> list:
-        """The equations that make the potential energy constant.
-
-        Every coefficient of a non-constant trigonometric term of the energy (see
-        :meth:`trig_coefficients`) set to zero: exact for independent coordinates; for a
-        loop whose symbols are tied, the energy is first reduced by the closure equations.
-        Raises ``NotImplementedError`` where no exact conditions exist (use
-        :meth:`balance_report`).
-
-        Returns
-        -------
-        list of sympy.Eq
-
-        Examples
-        --------
-        >>> import balancelab as bl
-        >>> bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3).balance_conditions()
-        [Eq(W*l - a_x*b_y*k, 0)]
-        """
-        return _symbolic.balance_conditions(self, parametric)
-
-    def conditions_residual(self) -> float:
-        """Largest balance-condition coefficient of this design's numbers, relative to its scale.
-
-        Substitutes the design's values into :meth:`balance_conditions` (parametric when
-        the method has symbols). Near zero (round-off) for a balanced design.
-
-        Returns
-        -------
-        float
-        """
-        return _symbolic.conditions_residual(self)

@@ -19,9 +19,12 @@ weight that is ``m G y``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, Sequence, TypeAlias
 
 from .validation import body_index, finite_real, planar_point
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["G", "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load"]
 
@@ -30,6 +33,11 @@ G: float = 9.81
 
 
 _REALIZATIONS = ("coil", "gas", "pulley")
+
+#: a load of :class:`SymbolicParts`: ``(body, (x, y), (f_x, f_y))`` with sympy expressions
+SymbolicLoad = tuple[int, tuple[Any, Any], tuple[Any, Any]]
+#: a spring of :class:`SymbolicParts`: ``(k, free_length, (body, (x, y)), (body, (x, y)))``
+SymbolicSpring = tuple[Any, Any, tuple[int, tuple[Any, Any]], tuple[int, tuple[Any, Any]]]
 
 
 class _AttachmentFields(NamedTuple):
@@ -48,11 +56,15 @@ class Attachment(_AttachmentFields):
 
     __slots__ = ()
 
-    def __new__(cls, body: int, point) -> "Attachment":
+    def __new__(cls, body: int, point) -> Attachment:
         return super().__new__(cls, body_index("attachment body", body), planar_point("attachment point", point))
 
 
-def _attachment(name: str, value) -> Attachment:
+#: what a spring end may be given as: an Attachment or a pair ``(body, (x, y))``
+AttachmentLike: TypeAlias = "Attachment | tuple[int, Sequence[float]]"
+
+
+def _attachment(name: str, value: AttachmentLike) -> Attachment:
     if isinstance(value, Attachment):
         return value
     try:
@@ -103,6 +115,10 @@ class Load:
     name: str = ""
     kind: str = "force"
 
+    if TYPE_CHECKING:  # the generated __init__ takes any pair of numbers (a list, an array) for point and force
+        def __init__(self, body: int, point: Sequence[float], force: Sequence[float], name: str = "",
+                     kind: str = "force") -> None: ...
+
     def __post_init__(self) -> None:
         object.__setattr__(self, "body", body_index("load body", self.body))
         object.__setattr__(self, "point", planar_point("load point", self.point))
@@ -116,7 +132,7 @@ class Load:
         return -self.force[1] / G
 
 
-def gravity_load(body: int, point, mass: float, name: str = "", kind: str = "weight") -> Load:
+def gravity_load(body: int, point: Sequence[float], mass: float, name: str = "", kind: str = "weight") -> Load:
     """Return the weight of a mass ``mass`` (kg) at ``point`` of ``body`` as a :class:`Load`.
 
     Parameters
@@ -209,7 +225,7 @@ class CablePath:
     Instances compare and hash by identity.
     """
 
-    def length(self, pose_a, pose_b):
+    def length(self, pose_a: np.ndarray, pose_b: np.ndarray) -> np.ndarray:
         """Length (m) between the spring's load points, from the poses ``(x, y, angle)`` of its bodies.
 
         Parameters
@@ -266,7 +282,11 @@ class Spring:
     a: Attachment
     b: Attachment
     name: str = ""
-    realization: str | Pulley = "coil"
+    realization: str | Pulley | CablePath = "coil"
+
+    if TYPE_CHECKING:  # the generated __init__ also takes plain (body, (x, y)) pairs for a and b
+        def __init__(self, k: float, free_length: float, a: AttachmentLike, b: AttachmentLike,
+                     name: str = "", realization: str | Pulley | CablePath = "coil") -> None: ...
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "k", finite_real("spring stiffness k (N/m)", self.k, positive=True))
@@ -312,7 +332,7 @@ class SymbolicParts:
     symbols); it is used only for :meth:`balancelab.Design.potential_energy_symbolic`.
     """
 
-    loads: tuple = ()
-    springs: tuple = ()
-    values: dict = field(default_factory=dict)
-    kinematics: object = None
+    loads: tuple[SymbolicLoad, ...] = ()
+    springs: tuple[SymbolicSpring, ...] = ()
+    values: dict[Any, float] = field(default_factory=dict)
+    kinematics: Any = None  # a Kinematics whose points are sympy expressions, or None

@@ -11,6 +11,8 @@ True
 """
 from __future__ import annotations
 
+from typing import Any, Sequence
+
 __all__ = ["BalancelabError", "UnreachableConfiguration", "InfeasibleDesign", "SingularChoice",
            "ApproximationError"]
 
@@ -45,11 +47,22 @@ class InfeasibleDesign(BalancelabError, ValueError):
 
     For instance a negative spring stiffness, or a non-positive mass or length.
 
+    Attributes
+    ----------
+    verdict : str or None
+        Set by :func:`balancelab.balance`: ``"impossible"``, ``"negative"``, ``"box"`` or
+        ``"not_found"`` (see :mod:`balancelab.methods.general.verdicts`); None otherwise.
+    box : tuple or None
+        Set by :func:`balancelab.balance` with the ``"box"`` verdict: the anchor box that would do.
+
     Examples
     --------
     >>> issubclass(InfeasibleDesign, ValueError)
     True
     """
+
+    verdict: str | None = None
+    box: Any = None
 
 
 class SingularChoice(BalancelabError, ValueError):
@@ -64,7 +77,7 @@ class SingularChoice(BalancelabError, ValueError):
     True
     """
 
-    def __init__(self, message: str, families: tuple = ()):
+    def __init__(self, message: str, families: Sequence[Any] = ()) -> None:
         super().__init__(message)
         self.families = tuple(families)
 

@@ -28,14 +28,15 @@ not the coordinates themselves); the others raise ``NotImplementedError`` there.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Sequence
+from typing import Any, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 __all__ = ["Kinematics", "body_to_world", "joint_gaps", "spread"]
 
 
-def body_to_world(poses: np.ndarray, bodies, points) -> tuple[np.ndarray, np.ndarray]:
+def body_to_world(poses: np.ndarray, bodies: ArrayLike, points: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Global coordinates of local body points, for every configuration.
 
     Parameters
@@ -188,17 +189,17 @@ class Kinematics(ABC):
         d = tuple(str(x) for x in self.descriptions)
         return d if len(d) == self.dof else ("",) * self.dof
 
-    def symbols(self):
+    def symbols(self) -> tuple[Any, ...]:
         """The sympy symbols of the configuration coordinates."""
         import sympy as sp
 
         return sp.symbols(self.names, real=True)
 
-    def symbolic_point(self, body: int, point, syms):
+    def symbolic_point(self, body: int, point: Sequence[Any], syms: Sequence[Any]) -> tuple[Any, Any]:
         """Global position (a pair of sympy expressions) of a local ``point`` of ``body``."""
         raise NotImplementedError(f"{type(self).__name__} has numeric kinematics only")
 
-    def symbol_values(self, q) -> np.ndarray:
+    def symbol_values(self, q: ArrayLike) -> np.ndarray:
         """Values of :meth:`symbols` in the configurations ``q``, shape ``(..., len(symbols))``."""
         q = np.asarray(q, dtype=float)
         if self.symbol_bodies is None:

@@ -20,13 +20,17 @@ import math
 import weakref
 from dataclasses import dataclass
 from numbers import Real
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .cancel import EXACT, null_subset
 from .samples import check_spread
 from .validation import positive_int
+
+if TYPE_CHECKING:
+    from .design import Design
 
 __all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
            "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
@@ -57,7 +61,7 @@ ROUND_OFF_ALLOWANCE: float = 1e-14
 #: and why, never balanced.
 MAX_ROUND_OFF_RATIO: float = 1e3
 
-_EXTENTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_EXTENTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 class Energy(NamedTuple):
@@ -125,7 +129,7 @@ class BalanceReport:
     n: int
     load_scale: float = math.nan
     load_variation: float = math.nan
-    q_units: tuple = ()
+    q_units: tuple[str, ...] = ()
     cancelled: float = 0.0
     roundoff: float = 0.0
 
@@ -153,7 +157,7 @@ class BalanceReport:
                 f"mean energy {self.energy:.6g} J")
 
 
-def q_units(design) -> tuple[str, ...]:
+def q_units(design: Design) -> tuple[str, ...]:
     """Unit of each configuration coordinate of ``design``: ``"rad"`` (an angle) or ``"m"`` (a slide).
 
     Examples
@@ -166,7 +170,7 @@ def q_units(design) -> tuple[str, ...]:
     return tuple(units) if units is not None else ("rad",) * design.dof
 
 
-def q_meaning(design) -> str:
+def q_meaning(design: Design) -> str:
     """What a design's ``q`` holds, for error messages: ``"angles in radians"``, ``"slides in metres"``
     or ``"angles in radians and slides in metres"``.
 
@@ -181,7 +185,7 @@ def q_meaning(design) -> str:
     return " and ".join(parts) or "angles in radians"
 
 
-def reference_point(design) -> np.ndarray:
+def reference_point(design: Design) -> np.ndarray:
     """The ground point (m) about which a design's element energies are taken: the ground end of its
     first ground joint, else the first ground end of a spring or a load, else the origin.
 
@@ -204,7 +208,7 @@ def reference_point(design) -> np.ndarray:
     return np.zeros(2)
 
 
-def energy_change(design, qp: np.ndarray, qm: np.ndarray) -> np.ndarray:
+def energy_change(design: Design, qp: np.ndarray, qm: np.ndarray) -> np.ndarray:
     """``V(qp) - V(qm)`` (J), each element's change taken first and then summed (energies about
     :func:`reference_point`): a large constant energy (a far origin, an idle stiff spring) costs no
     digits, as it would in the difference of two summed totals.
@@ -225,7 +229,7 @@ def energy_change(design, qp: np.ndarray, qm: np.ndarray) -> np.ndarray:
     return change.reshape(shape)
 
 
-def q_shown(unit: str, value):
+def q_shown(unit: str, value: ArrayLike) -> Any:
     """A coordinate as shown to a reader: an angle (rad) in degrees, a slide (m) as it is.
 
     Examples
@@ -236,7 +240,7 @@ def q_shown(unit: str, value):
     return np.degrees(value) if unit == "rad" else value
 
 
-def format_q(units, q, names=None) -> str:
+def format_q(units: Sequence[str], q: ArrayLike, names: Sequence[str] | None = None) -> str:
     """``"22.9°, 0.4 m"``: a configuration in its units (degrees for angles, metres for slides).
 
     Examples
@@ -256,7 +260,7 @@ def _q_text(unit: str, value: float, fmt: str) -> str:
     return f"{q_shown(unit, value):{fmt}}" + ("°" if unit == "rad" else " m")
 
 
-def check_tolerance(tolerance) -> float:
+def check_tolerance(tolerance: Any) -> float:
     """``tolerance`` as a float with ``0 < tolerance < 1``, or a TypeError/ValueError naming it.
 
     Examples
@@ -278,7 +282,7 @@ def check_tolerance(tolerance) -> float:
     return value
 
 
-def reachable_extent(design) -> np.ndarray:
+def reachable_extent(design: Design) -> np.ndarray:
     """Extent ``max - min`` (rad) of each coordinate over the default sample of ``design``.
 
     The default sample is ``design.sample(1000, seed=0)``: the configurations
@@ -326,7 +330,7 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     return q
 
 
-def load_scale(design, q, load_energies: np.ndarray, scale: float, roundoff: float = 0.0,
+def load_scale(design: Design, q: np.ndarray, load_energies: np.ndarray, scale: float, roundoff: float = 0.0,
                spring_energies: np.ndarray | None = None, tolerance: float = BALANCE_TOLERANCE) -> float:
     """The energy (J) the loads exchange over the configurations ``q``: the verdict's yardstick.
 
@@ -505,7 +509,7 @@ def _closure_allowance(design, poses, spring_energies) -> float:
     return CLOSURE_FACTOR * gap * forces
 
 
-def balance_report(design, q=None, *, n: int = 1000, seed: int | None = 0,
+def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                    tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
     """The :class:`BalanceReport` of ``design`` (see :meth:`balancelab.Design.balance_report`).
 

@@ -8,6 +8,8 @@ unbalanced one: :func:`check_spread` refuses it. Layer: core.
 """
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 __all__ = ["harmonic_features", "check_spread"]
@@ -20,7 +22,7 @@ MIN_CONDITION: float = 1e-12
 MIN_VALUES: int = 5
 
 
-def harmonic_features(q: np.ndarray, units) -> tuple[np.ndarray, list[str]]:
+def harmonic_features(q: np.ndarray, units: Sequence[str]) -> tuple[np.ndarray, list[str]]:
     """The harmonics of a design's energy at configurations ``q`` (rad or m): columns and their names.
 
     Examples
@@ -58,7 +60,7 @@ def _index(units, i: int) -> int:
     return sum(4 if u == "rad" else 2 for u in units[:i])
 
 
-def check_spread(q: np.ndarray, units, names) -> None:
+def check_spread(q: np.ndarray, units: Sequence[str], names: Sequence[str]) -> None:
     """Refuse configurations ``q`` on which a harmonic of the energy cannot vary independently.
 
     Raises
@@ -100,6 +102,6 @@ def check_spread(q: np.ndarray, units, names) -> None:
         _, sv, vt = np.linalg.svd(F / norms, full_matrices=False)
         if sv[-1] >= MIN_CONDITION * sv[0]:
             return
-        dead = [int(np.argmax(np.abs(vt[-1])))]
+        dead = np.array([int(np.argmax(np.abs(vt[-1])))])
     raise ValueError(message + f"on these {len(q)} configurations {labels[dead[0]]} does not vary independently; "
                      f"coordinates {tuple(names)}; use design.sample(n) or a grid")

@@ -6,10 +6,16 @@ trigonometric normal form. sympy is imported on first use. Layer: core.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any, cast
+
 import numpy as np
 
+if TYPE_CHECKING:
+    from .design import Design
+    from .kinematics import Kinematics
+
 __all__ = ["potential_energy_symbolic", "trig_coefficients", "symbols_are_independent",
-           "constrained_coefficients", "balance_conditions", "conditions_residual"]
+           "constrained_coefficients", "balance_conditions", "conditions_residual", "SymbolicMethods"]
 
 
 def _symbolic_parts(design, parametric: bool):
@@ -25,7 +31,7 @@ def _symbolic_parts(design, parametric: bool):
     return loads, springs
 
 
-def potential_energy_symbolic(design, parametric: bool = True, split: bool = False):
+def potential_energy_symbolic(design: Design, parametric: bool = True, split: bool = False) -> Any:
     """The potential energy as a sympy expression in the configuration angles.
 
     Parameters
@@ -130,7 +136,7 @@ def _coefficient_dict(poly, gens, syms, S, C, simplify: bool) -> dict:
     return out
 
 
-def trig_coefficients(design, parametric: bool = True) -> dict:
+def trig_coefficients(design: Design, parametric: bool = True) -> dict:
     """Coefficients of the potential energy in a unique trigonometric form.
 
     The energy is expanded into a polynomial in ``cos(q_i)`` and ``sin(q_i)`` and
@@ -171,7 +177,7 @@ def trig_coefficients(design, parametric: bool = True) -> dict:
     return dict(design._sym_cache[key])
 
 
-def symbols_are_independent(kinematics) -> bool:
+def symbols_are_independent(kinematics: Kinematics) -> bool:
     """Whether the sympy symbols of ``kinematics`` are independent coordinates.
 
     True when the kinematics says so (its ``independent_symbols``: the relaxed
@@ -256,7 +262,7 @@ def _check_necessary(design, G, gens, degree: int) -> None:
             "the design numerically with balance_report()")
 
 
-def constrained_coefficients(design, parametric: bool = True) -> dict:
+def constrained_coefficients(design: Design, parametric: bool = True) -> dict:
     """Coefficients of the energy reduced modulo the linkage's own closure equations.
 
     For kinematics whose symbols are tied (a ``"loop"`` four-bar: crank and rocker
@@ -305,7 +311,7 @@ def _condition_coefficients(design, parametric: bool) -> dict:
     return constrained_coefficients(design, parametric)
 
 
-def balance_conditions(design, parametric: bool = True) -> list:
+def balance_conditions(design: Design, parametric: bool = True) -> list:
     """The equations that make the potential energy constant.
 
     Every coefficient of a non-constant trigonometric term of the energy set to zero:
@@ -346,7 +352,7 @@ def balance_conditions(design, parametric: bool = True) -> list:
     return eqs
 
 
-def conditions_residual(design) -> float:
+def conditions_residual(design: Design) -> float:
     """Largest balance-condition coefficient of this design's numbers, relative to its scale.
 
     Substitutes the design's values into :func:`balance_conditions` (parametric when
@@ -376,3 +382,80 @@ def conditions_residual(design) -> float:
             continue
         worst = max(worst, abs(float(sp.sympify(coeff).subs(values).evalf())))
     return worst / design.balance_report(n=200).scale
+
+
+class SymbolicMethods:
+    """The symbolic side of :class:`~balancelab.Design`: its energy as a sympy expression and its
+    balance conditions (a base class of ``Design``; every method reads only the design's fields)."""
+
+    def potential_energy_symbolic(self, parametric: bool = True, split: bool = False) -> Any:
+        """The potential energy as a sympy expression in the configuration angles.
+
+        Parameters
+        ----------
+        parametric : bool
+            Use the method's symbolic design parameters (when it has them, see
+            ``design.symbolic.values``); otherwise the numbers of this design.
+        split : bool
+            Return ``(load part, spring part)`` instead of their sum.
+
+        Returns
+        -------
+        sympy.Expr or tuple of sympy.Expr
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> d = bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3)
+        >>> d.potential_energy_symbolic()
+        W*l*sin(theta) + k*(a_x**2*cos(theta)**2 + (a_x*sin(theta) - b_y)**2)/2
+        """
+        return potential_energy_symbolic(cast("Design", self), parametric, split)
+
+    def trig_coefficients(self, parametric: bool = True) -> dict:
+        """Coefficients of the potential energy in a unique trigonometric form.
+
+        The energy is expanded into a polynomial in ``cos(q_i)`` and ``sin(q_i)`` and
+        reduced with ``sin^2 = 1 - cos^2``; in that normal form it is constant exactly when
+        every coefficient other than the constant term vanishes.
+
+        Returns
+        -------
+        dict
+            Maps each trigonometric monomial (a sympy expression, ``1`` for the constant)
+            to its coefficient.
+        """
+        return trig_coefficients(cast("Design", self), parametric)
+
+    def balance_conditions(self, parametric: bool = True) -> list:
+        """The equations that make the potential energy constant.
+
+        Every coefficient of a non-constant trigonometric term of the energy (see
+        :meth:`trig_coefficients`) set to zero: exact for independent coordinates; for a
+        loop whose symbols are tied, the energy is first reduced by the closure equations.
+        Raises ``NotImplementedError`` where no exact conditions exist (use
+        :meth:`balance_report`).
+
+        Returns
+        -------
+        list of sympy.Eq
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> bl.singh.lacoste_lever(weight=10.0, length=0.5, a_x=0.2, b_y=0.3).balance_conditions()
+        [Eq(W*l - a_x*b_y*k, 0)]
+        """
+        return balance_conditions(cast("Design", self), parametric)
+
+    def conditions_residual(self) -> float:
+        """Largest balance-condition coefficient of this design's numbers, relative to its scale.
+
+        Substitutes the design's values into :meth:`balance_conditions` (parametric when
+        the method has symbols). Near zero (round-off) for a balanced design.
+
+        Returns
+        -------
+        float
+        """
+        return conditions_residual(cast("Design", self))

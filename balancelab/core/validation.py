@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from numbers import Real
+from typing import Any
 
 import numpy as np
 
@@ -21,7 +22,7 @@ MAX_MAGNITUDE = 1e12
 MIN_POSITIVE = 1e-12
 
 
-def finite_real(name: str, value, *, positive: bool = False, nonnegative: bool = False) -> float:
+def finite_real(name: str, value: Any, *, positive: bool = False, nonnegative: bool = False) -> float:
     """Return ``value`` as a float, or raise a clear error naming ``name``."""
     if isinstance(value, bool) or not isinstance(value, (Real, np.floating, np.integer)):
         raise TypeError(f"{name} must be a real number, got {type(value).__name__} {value!r}")
@@ -43,7 +44,7 @@ def finite_real(name: str, value, *, positive: bool = False, nonnegative: bool =
     return value
 
 
-def planar_point(name: str, value, unit: str = "m") -> tuple[float, float]:
+def planar_point(name: str, value: Any, unit: str = "m") -> tuple[float, float]:
     """Return a planar point (or a planar vector of ``unit``, e.g. a force in N) as a tuple of two
     floats, or raise naming ``name``.
 
@@ -76,7 +77,7 @@ def planar_point(name: str, value, unit: str = "m") -> tuple[float, float]:
     return (float(arr[0]), float(arr[1]))
 
 
-def body_index(name: str, value, nbodies: int | None = None, *, moving: bool = False) -> int:
+def body_index(name: str, value: Any, nbodies: int | None = None, *, moving: bool = False) -> int:
     """Return ``value`` as a body index (an int >= 0, 0 the ground), or raise naming ``name``.
 
     With ``nbodies`` the index must also name one of that many bodies, and with ``moving``
@@ -98,7 +99,7 @@ def body_index(name: str, value, nbodies: int | None = None, *, moving: bool = F
     return int(value)
 
 
-def positive_int(name: str, value, minimum: int = 1, maximum: int | None = None) -> int:
+def positive_int(name: str, value: Any, minimum: int = 1, maximum: int | None = None) -> int:
     """Return ``value`` as an int in ``minimum..maximum``, or raise a clear error naming ``name``.
 
     The one integer check of the package: a value that is not an integer (``2.5``, ``"3"``,
@@ -142,7 +143,7 @@ def _items(name: str, value, n: int | None, what: str) -> list:
     return items
 
 
-def finite_reals(name: str, value, n: int | None, *, positive: bool = False,
+def finite_reals(name: str, value: Any, n: int | None, *, positive: bool = False,
                  nonnegative: bool = False) -> tuple[float, ...]:
     """Return ``value`` as a tuple of ``n`` floats (one per body or spring), each checked.
 
@@ -158,7 +159,7 @@ def finite_reals(name: str, value, n: int | None, *, positive: bool = False,
                  for i, v in enumerate(items))
 
 
-def planar_points(name: str, value, n: int | None) -> tuple[tuple[float, float], ...]:
+def planar_points(name: str, value: Any, n: int | None) -> tuple[tuple[float, float], ...]:
     """Return ``value`` as a tuple of ``n`` points ``(x, y)``, each checked.
 
     ``n=None`` accepts any non-empty number of points.
@@ -172,7 +173,7 @@ def planar_points(name: str, value, n: int | None) -> tuple[tuple[float, float],
     return tuple(planar_point(_nth(name, i), v) for i, v in enumerate(items))
 
 
-def length_or_symbol(name: str, value):
+def length_or_symbol(name: str, value: Any) -> Any:
     """A length (m, a float > 0, checked) or a sympy expression (for a symbolic energy), unchanged.
 
     Examples
@@ -185,7 +186,7 @@ def length_or_symbol(name: str, value):
     return finite_real(name, value, positive=True)
 
 
-def step_size(name: str, value, maximum: float) -> float:
+def step_size(name: str, value: Any, maximum: float) -> float:
     """Return a finite-difference step in ``(0, maximum]``, or raise naming ``name`` (0 is no step).
 
     Examples
@@ -199,7 +200,7 @@ def step_size(name: str, value, maximum: float) -> float:
     return value
 
 
-def sequence_of(name: str, value, kind: type) -> tuple:
+def sequence_of(name: str, value: Any, kind: type) -> tuple:
     """Return ``value`` as a tuple of ``kind`` instances, or raise a ``TypeError`` naming ``name``.
 
     Examples
@@ -216,7 +217,7 @@ def sequence_of(name: str, value, kind: type) -> tuple:
     return items
 
 
-def instance_of(name: str, value, kind: type | tuple, what: str):
+def instance_of(name: str, value: Any, kind: type | tuple, what: str) -> Any:
     """Return ``value`` if it is an instance of ``kind``, else raise a ``TypeError`` naming ``name``.
 
     Examples
@@ -229,7 +230,7 @@ def instance_of(name: str, value, kind: type | tuple, what: str):
     return value
 
 
-def real_array(name: str, value, *, ndim_min: int = 0) -> np.ndarray:
+def real_array(name: str, value: Any, *, ndim_min: int = 0) -> np.ndarray:
     """Return ``value`` as a float array of finite numbers, or raise naming ``name``.
 
     Strings, ``None`` and non-numeric items are refused (no silent ``float("0.1")``).
@@ -257,7 +258,7 @@ def real_array(name: str, value, *, ndim_min: int = 0) -> np.ndarray:
     return arr
 
 
-def option(name: str, value, choices: tuple):
+def option(name: str, value: Any, choices: tuple) -> Any:
     """Return ``value`` if it is one of ``choices``, else raise a ``ValueError`` naming ``name``.
 
     Examples

@@ -121,7 +121,7 @@ class Cgroup:
     >>> cg.remove()
     """
 
-    def __init__(self, caps: Caps):
+    def __init__(self, caps: Caps) -> None:
         self.dirs: dict[str, Path] = {}
         parents = _parents()
         if not parents:
@@ -145,7 +145,7 @@ class Cgroup:
             self.remove()
 
     @classmethod
-    def attach(cls, dirs: dict) -> "Cgroup":
+    def attach(cls, dirs: dict) -> Cgroup:
         """The cgroup whose folders another process created (controller -> folder)."""
         cg = cls.__new__(cls)
         cg.dirs = {str(k): Path(v) for k, v in dirs.items()}

@@ -15,7 +15,7 @@ from ..methods.registry import Example, examples
 __all__ = ["catalog", "Example"]
 
 
-def catalog() -> "OrderedDict[str, Example]":
+def catalog() -> OrderedDict[str, Example]:
     """Every worked example of the course, in the order of the course.
 
     Returns

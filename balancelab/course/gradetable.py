@@ -201,8 +201,9 @@ class RowWriter:
     'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,attempts'
     """
 
-    def __init__(self, path: str | Path):
-        self.path, self.rows = Path(path), []
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        self.rows: list[GradeRow] = []
         self.cols = [t.id for t in _check.tasks()]
         self._f = self.path.open("w", newline="", encoding="utf-8")
         self._w = csv.writer(self._f)

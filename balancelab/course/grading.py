@@ -46,6 +46,7 @@ import sys
 import tempfile
 import threading
 import time
+from typing import Any
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import asdict, replace
 from pathlib import Path
@@ -138,7 +139,7 @@ def grade_namespace(namespace: dict, lab: str) -> dict:
 
 
 def _parse_notebook(data: bytes):
-    sys.modules.setdefault("rfc3987_syntax", None)  # jsonschema's 4 s IRI grammar: no IRI is validated here
+    sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]  # None blocks the import: jsonschema's 4 s IRI grammar: no IRI is validated here
     import nbformat
 
     try:
@@ -179,7 +180,7 @@ def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeo
         results = {x["task"]["id"]: x["task"] for x in lines if isinstance(x.get("task"), dict)}
         peak = cgroup.peak()
         hits = cgroup.hits()
-        extra = dict(peak=peak, attempts={})
+        extra: dict[str, Any] = dict(peak=peak, attempts={})
         if run is None:
             why = ended or "the runner stopped before reporting"
             return "error", {}, [f"{why}: nothing was graded (0 points)"] + \

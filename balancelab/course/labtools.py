@@ -292,7 +292,7 @@ def generate(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUD
     """
     written = []
     Path(dst).mkdir(parents=True, exist_ok=True)
-    for s, d in _pairs(src, dst):
+    for s, d in _pairs(Path(src), Path(dst)):
         d.write_text(student_text(s), encoding="utf-8")
         written.append(d)
     return written
@@ -322,7 +322,7 @@ def stale(src: str | Path = DEFAULT_SOLUTIONS, dst: str | Path = DEFAULT_STUDENT
     >>> stale(root / "solutions", root / "student")
     []
     """
-    return [d for s, d in _pairs(src, dst)
+    return [d for s, d in _pairs(Path(src), Path(dst))
             if not d.exists() or d.read_text(encoding="utf-8") != student_text(s)]
 
 

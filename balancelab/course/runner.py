@@ -33,6 +33,7 @@ import secrets
 import signal
 import sys
 import time
+from typing import Any
 from pathlib import Path
 
 from .caps import Caps, Cgroup
@@ -43,7 +44,7 @@ from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nob
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
 
 # jsonschema (imported by nbformat) builds an IRI grammar for 4 s on import; nothing here validates an IRI
-sys.modules.setdefault("rfc3987_syntax", None)
+sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]  # None blocks the import on purpose
 
 #: Largest export (bytes of answer data after one cell).
 EXPORT_CAP = 4 * 2 ** 20
@@ -154,6 +155,7 @@ def _kernel_manager_class():
                 if kernel_runs_as_nobody():  # its reader, alone (the scratch folder is the grader's)
                     os.chown(mine, NOBODY, NOBODY)
                 conn = f"{SHARE}/kernel-sandbox.json"
+            assert self.kernel_spec is not None  # set in __init__
             return [a.replace("{connection_file}", conn) for a in self.kernel_spec.argv]
 
     return SandboxKernelManager
@@ -190,6 +192,7 @@ def _client_class(budget: int):
 
             from jupyter_core.utils import ensure_async
 
+            assert self.km is not None and self.kc is not None  # a cell runs: the kernel is up
             await ensure_async(self.km.interrupt_kernel())
             loop_end = asyncio.get_event_loop().time() + INTERRUPT_GRACE
             while (left := loop_end - asyncio.get_event_loop().time()) > 0:
@@ -351,7 +354,11 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     client = _client_class(caps.output)(nb, km=km, timeout=cell_timeout, allow_errors=True,
                                         interrupt_on_timeout=True, shutdown_kernel="immediate",
                                         startup_timeout=120)
-    answers, errors, notes, status, full = {}, [], [], "error", {}
+    answers: dict[str, Any] = {}
+    errors: list[str] = []
+    notes: list[str] = []
+    full: dict[str, Any] = {}
+    status = "error"
     if not cgroup.dirs:
         notes.append("caps: the memory of the process tree and the process count are enforced per process "
                      "only (no cgroup here)")
@@ -423,8 +430,8 @@ def _judge_one(task_id: str, data, student: str, seconds: float) -> dict:
     try:
         return json.loads(b"".join(chunks))
     except (ValueError, RecursionError):
-        code = os.WEXITSTATUS(status) if os.WIFEXITED(status) else None
-        if code == 3:
+        exit_code = os.WEXITSTATUS(status) if os.WIFEXITED(status) else None
+        if exit_code == 3:
             return dict(correct=False, score=0.0, message="the answer needed more memory than the checker "
                                                           "allows: not graded")
         return dict(correct=False, score=0.0, message=f"the answer took more than {seconds:g} s to check: not graded")
@@ -462,7 +469,8 @@ def judge_tasks(answers: dict, lab: str, student: str, seconds: float, report) -
             continue
         v = _judge_one(t.id, answers[t.variable], student, seconds)
         ok = v.get("correct") is True
-        score = v.get("score") if isinstance(v.get("score"), float) else 0.0
+        raw = v.get("score")
+        score = raw if isinstance(raw, float) else 0.0
         row.update(correct=ok, message=str(v.get("message", "")),
                    score=min(max(score, 0.0), float(t.points)) if ok else 0.0)
         report(row)

@@ -280,7 +280,9 @@ def _made_readable(binds: list[str], held: list[str]) -> list[str]:
 
     ``held`` are folders the sandbox makes itself (an empty ``/tmp``): they exist, but what lies
     below them does not (a checkout under ``/tmp/x`` needs ``/tmp/x`` made readable)."""
-    out, made, bound = [], {Path(h) for h in held}, []
+    out: list[str] = []
+    made = {Path(h) for h in held}
+    bound: list[Path] = []
     for i, arg in enumerate(binds):
         if arg not in ("--ro-bind", "--ro-bind-try", "--bind", "--symlink"):
             continue

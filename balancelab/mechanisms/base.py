@@ -46,7 +46,7 @@ class ExplicitKinematics(Kinematics):
     """
 
     def __init__(self, nbodies: int, names: Sequence[str], q_range, pose_fn: Callable,
-                 valid_fn: Callable | None = None, open_range: bool = False, descriptions: Sequence[str] = ()):
+                 valid_fn: Callable | None = None, open_range: bool = False, descriptions: Sequence[str] = ()) -> None:
         self.descriptions = tuple(descriptions)
         self.nbodies = int(nbodies)
         self.names = tuple(names)
@@ -104,7 +104,7 @@ class TreeKinematics(ExplicitKinematics):
     """
 
     def __init__(self, nbodies: int, joints: Sequence[Joint], angle_matrix, names, q_range,
-                 angle_offset=None, open_range: bool = False):
+                 angle_offset=None, open_range: bool = False) -> None:
         A = np.asarray(angle_matrix, dtype=float)
         if A.shape != (nbodies, len(names)):
             raise ValueError(f"angle_matrix must have shape ({nbodies}, {len(names)}), got {A.shape}")

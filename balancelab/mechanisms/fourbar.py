@@ -70,9 +70,9 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
 
 
 def _cannot_assemble(crank, coupler, rocker, ground) -> str:
-    return ("this four-bar cannot assemble: with crank {:.4g} m, coupler {:.4g} m, rocker {:.4g} m "
-            "and ground {:.4g} m no crank angle closes the loop (each link must be shorter than "
-            "the sum of the other three)".format(crank, coupler, rocker, ground))
+    return (f"this four-bar cannot assemble: with crank {crank:.4g} m, coupler {coupler:.4g} m, rocker {rocker:.4g} m "
+            f"and ground {ground:.4g} m no crank angle closes the loop (each link must be shorter than "
+            "the sum of the other three)")
 
 
 def pivot_name(parameter: str, value: str) -> str:
@@ -151,7 +151,7 @@ class FourBarKinematics(Kinematics):
     """
 
     def __init__(self, A: Point, B: Point, crank: float, coupler: float, rocker: float, branch: int = 1,
-                 symbolic: str = "loop", circuit: float | None = None):
+                 symbolic: str = "loop", circuit: float | None = None) -> None:
         self.A = np.array(planar_point("pivot A", A))
         self.B = np.array(planar_point("pivot B", B))
         self.r2 = finite_real("crank length (m)", crank, positive=True)
@@ -487,7 +487,7 @@ def fourbar_design(name: str, fourbar: FourBar, loads: Sequence[Load], springs: 
     lab.update(labels or {})
     kin = fourbar.kinematics if kinematics is None else kinematics
     return Design(name, ("ground", "crank", "coupler", "rocker"), fourbar.joints(), kin,
-                  loads, springs, labels=lab, parameters=parameters, reference=reference)
+                  loads, springs, labels=lab, parameters=parameters or {}, reference=reference)
 
 
 def coupler_curve(fourbar: FourBar, n: int = 721) -> np.ndarray:

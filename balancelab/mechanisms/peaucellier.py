@@ -52,7 +52,7 @@ class PeaucellierKinematics(Kinematics):
     0.9663
     """
 
-    def __init__(self, crank: float, arm: float, side: float):
+    def __init__(self, crank: float, arm: float, side: float) -> None:
         self.d = finite_real("crank (length d, m)", crank, positive=True)
         self.l = finite_real("arm (long-arm length l, m)", arm, positive=True)
         self.s = finite_real("side (rhombus side s, m)", side, positive=True)

@@ -27,7 +27,7 @@ __all__ = ["Example", "example", "register", "examples", "FAMILIES"]
 #: The method families, in the order the course meets them within a chapter.
 FAMILIES = ("lecture", "singh", "realize", "lustig", "deepak", "general", "practice")
 
-_REGISTRY: dict[str, "Example"] = {}
+_REGISTRY: dict[str, Example] = {}
 _DECLARED = itertools.count()        # declarations, in the order they run
 
 

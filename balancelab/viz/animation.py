@@ -20,7 +20,7 @@ text stays readable when a phone shows it at the page's width.
 from __future__ import annotations
 
 import math
-from typing import Callable, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -98,6 +98,12 @@ def _animation_class():
 
         dynamic = None
         _compact_saving = False
+        # FuncAnimation's private attributes this class reads (issue 22, item 8: public API or a pinned range)
+        _fig: Any
+        _func: Any
+        _frames_list: Any
+        _interval: float
+        _blitter: Any
 
         def _render_frame(self) -> np.ndarray:
             if self.dynamic is None:
@@ -116,7 +122,7 @@ def _animation_class():
         def _post_draw(self, framedata, blit):
             if self._compact_saving:
                 return  # the writer renders the frame itself, once
-            super()._post_draw(framedata, blit)
+            super()._post_draw(framedata, blit)  # type: ignore[misc]  # private in matplotlib's stubs
 
         def to_jshtml(self, fps=None, embed_frames=True, default_mode=None):
             """Self-contained HTML/JavaScript player of the animation (see matplotlib's)."""
@@ -449,7 +455,7 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
     fig.canvas.mpl_disconnect(anim._first_draw_id)
     anim._draw_was_started = True
     anim._frames_list = list(range(len(values)))
-    if show_energy and first.dof == 1:
+    if energy is not None and first.dof == 1:  # energy is shown
         anim.dynamic = lambda: (drawing.artists + [note, title] + energy.artists
                                 + [energy.ax.title])
     anim.values = values
@@ -488,7 +494,7 @@ def _sweep_words(designs: list, heads: list, name: str, unit_s: str) -> tuple[li
     verdicts, labels = [], []
     for d, h in zip(designs, heads):
         rep = None if d is None else d.balance_report(n=200)
-        verdicts.append("no valid design" if d is None else ("balanced" if rep.balanced else "not balanced"))
+        verdicts.append("no valid design" if rep is None else ("balanced" if rep.balanced else "not balanced"))
         labels.append(f"{h}, {verdicts[-1]}")
     first = next(d for d in designs if d is not None)
     vals = [h.split(" = ", 1)[1].removesuffix(unit_s) for h in heads]

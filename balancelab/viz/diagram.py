@@ -194,10 +194,10 @@ def diagram(design: Design, q=None, *, points: Mapping | None = None,
         for name in spec[:2]:
             if name not in pos:
                 raise ValueError(f"lengths: {name!r} is not a named point ({sorted(pos)})")
-    for spec in angles:
-        if len(spec) != 4 or spec[0] not in pos or (spec[2] not in pos):
+    for angle in angles:
+        if len(angle) != 4 or angle[0] not in pos or (angle[2] not in pos):
             raise ValueError(f"angles: each item must be (vertex, reference, to_point, symbol) with named "
-                             f"vertex and to_point ({sorted(pos)}), got {spec!r}")
+                             f"vertex and to_point ({sorted(pos)}), got {angle!r}")
     ax = draw(design, q, ax=new_axes(ax), labels=False, title=title)
     P = np.array(list(pos.values())).reshape(-1, 2)
     scale = max(float(np.ptp(P, axis=0).max()) if len(P) > 1 else 0.0, 0.5 * float(ax.drawing.size))

@@ -14,6 +14,7 @@ place instead of redrawing the figure. Layer: viz.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -74,8 +75,8 @@ def _body_points(design: Design) -> list[list[tuple[float, float]]]:
     return [list(dict.fromkeys(p)) for p in pts]
 
 
-def _ground_points(design: Design) -> list[tuple[float, float]]:
-    out = []
+def _ground_points(design: Design) -> list[tuple[float, ...]]:
+    out: list[tuple[float, ...]] = []
     for j in design.joints:
         if j.body_i == 0:
             out.append(tuple(j.point_i))
@@ -84,7 +85,7 @@ def _ground_points(design: Design) -> list[tuple[float, float]]:
     for s in design.springs:
         for at in (s.a, s.b):
             if at.body == 0:
-                out.append(tuple(at.point))
+                out.append(at.point)
     return list(dict.fromkeys(out))
 
 
@@ -124,7 +125,7 @@ class Geometry:
     [0.5, 0.0]
     """
 
-    def __init__(self, design: Design):
+    def __init__(self, design: Design) -> None:
         self.design = design
         self.body_pts = _body_points(design)
         att: list = []
@@ -270,7 +271,7 @@ class Drawing:
     """
 
     def __init__(self, design: Design, q=None, ax=None, *, labels: bool = True, color: str | None = None,
-                 limits: bool = True, linewidth: float = 3.0, alpha: float = 1.0):
+                 limits: bool = True, linewidth: float = 3.0, alpha: float = 1.0) -> None:
         self.ax = new_axes(ax)
         self.show_labels = bool(labels)
         self.color = color or STYLE["link"]
@@ -358,9 +359,12 @@ class Drawing:
         L, a = self.size, self.alpha
         loads = self.design.loads
         fmax = max([float(np.hypot(*ld.force)) for ld in loads] + [1e-300])
-        self.loads, self.load_lengths = [], []
+        # a Circle for a counterweight, a FancyArrowPatch for any other load (see update)
+        self.loads: list[Any] = []
+        self.load_lengths: list[float] = []
         for ld in loads:
             f = float(np.hypot(*ld.force))
+            art: Circle | FancyArrowPatch
             if ld.kind == "counterweight":
                 length = 0.025 * L + 0.035 * L * math.sqrt(f / fmax)
                 art = Circle((0, 0), length, facecolor=STYLE["counterweight"], edgecolor="black",
@@ -464,7 +468,7 @@ class Drawing:
                                           W[g.joint_idx] if self.design.joints else (),
                                           getattr(self, "_label_dirs", None))
 
-    def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> "Drawing":
+    def update(self, q=None, design: Design | None = None, *, rescale: bool = True) -> Drawing:
         """Move the artists to configuration ``q`` (rad), optionally of another design.
 
         A design with the same structure (bodies, joints, springs and their

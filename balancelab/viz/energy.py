@@ -12,13 +12,18 @@ from __future__ import annotations
 
 import math
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..core.design import Design
 from ..core.report import format_q, q_shown, q_units
 from ..core.validation import finite_real
 from .style import FONT, fit_title
-from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid, tex_label
+from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid
+
+if TYPE_CHECKING:
+    from matplotlib.image import AxesImage
 
 __all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
            "sweep_path"]
@@ -236,7 +241,7 @@ class EnergyView:
     """
 
     def __init__(self, design: Design, ax=None, *, n: int | None = None, report=None,
-                 q=None, residual_ax=None, legend: bool = True, title: bool = True):
+                 q=None, residual_ax=None, legend: bool = True, title: bool = True) -> None:
         check_design(design)
         self.path = design.dof > 2  # curves along sweep_path instead of a map
         self.ax = new_axes(ax, figsize=(5.0, 3.4))
@@ -249,8 +254,8 @@ class EnergyView:
         #: the legend (1 dof, when asked for); it also carries the verdict, which then never
         #: covers a curve or the legend
         self.legend = None
-        self.image = None
-        self.residual_image = None
+        self.image: AxesImage | None = None  # the energy map (2 dof)
+        self.residual_image: AxesImage | None = None
         if design.dof != 2:
             self._init_curves(design, legend)
         else:
@@ -305,7 +310,7 @@ class EnergyView:
             residual_ax.set_ylabel(angle_label(design, 1))
             residual_ax.set_title("residual generalized force", fontsize=FONT["title"])
 
-    def update(self, design: Design | None = None, *, report=None, q=None) -> "EnergyView":
+    def update(self, design: Design | None = None, *, report=None, q=None) -> EnergyView:
         """Recompute the curves (or map) for ``design`` and move the marker to ``q``.
 
         Parameters
@@ -370,6 +375,7 @@ class EnergyView:
         self.scale = rep.scale if rep is not None else float(np.nanmax(np.abs(Z - self.mean)) or 1.0)
         # deviation from the mean in units of the energy scale: one fixed colour range
         # for every design, a single flat colour when balanced
+        assert self.image is not None  # _show_maps draws a 2-dof design, whose map _build made
         self.image.set_data((Z - self.mean) / self.scale)
         self.image.set_clim(-0.5, 0.5)
         if self.residual_image is not None:

@@ -22,7 +22,7 @@ import html
 import inspect
 import math
 from io import BytesIO
-from typing import Callable, Mapping
+from typing import Any, Callable, Mapping
 
 import numpy as np
 
@@ -68,15 +68,15 @@ def scaled_design_factory(design: Design):
     """
     check_design(design)
     if design.springs:
-        def factory(stiffness: float = 1.0) -> Design:
+        def by_stiffness(stiffness: float = 1.0) -> Design:
             if not stiffness > 0:
                 raise ValueError(f"stiffness factor must be > 0, got {stiffness}")
             return design.replace(springs=[dataclasses.replace(s, k=s.k * stiffness)
                                            for s in design.springs])
 
-        return factory, {"stiffness": (0.5, 1.5, 0.01, 1.0)}
+        return by_stiffness, {"stiffness": (0.5, 1.5, 0.01, 1.0)}
     if any(ld.kind == "counterweight" for ld in design.loads):
-        def factory(counterweight: float = 1.0) -> Design:
+        def by_counterweight(counterweight: float = 1.0) -> Design:
             if not counterweight > 0:
                 raise ValueError(f"counterweight factor must be > 0, got {counterweight}")
             loads = [dataclasses.replace(ld, force=(ld.force[0] * counterweight,
@@ -84,12 +84,12 @@ def scaled_design_factory(design: Design):
                      if ld.kind == "counterweight" else ld for ld in design.loads]
             return design.replace(loads=loads)
 
-        return factory, {"counterweight": (0.5, 1.5, 0.01, 1.0)}
+        return by_counterweight, {"counterweight": (0.5, 1.5, 0.01, 1.0)}
 
-    def factory() -> Design:
+    def unchanged() -> Design:
         return design
 
-    return factory, {}
+    return unchanged, {}
 
 
 def _normalize_params(factory, params: Mapping) -> dict:
@@ -166,7 +166,7 @@ class Explorer:
 
     def __init__(self, factory: Callable, params: Mapping | None = None, q=True, *,
                  fixed: Mapping | None = None, figsize=FIGSIZE, dpi: float = DPI,
-                 labels: bool = True, report_samples: int = 1000):
+                 labels: bool = True, report_samples: int = 1000) -> None:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
 
@@ -183,7 +183,7 @@ class Explorer:
         self.message = ""
         self.renders = 0
         self.png = b""
-        self._widget = None
+        self._widget: Any = None  # the ipywidgets VBox, made on first display
         self._syncing = False
         design = self._build(self.values)
         if q is True or q is None or q is False:
@@ -214,7 +214,7 @@ class Explorer:
             self._fit_energy_limits()
         fig.canvas.draw()
         fig.set_layout_engine("none")
-        self._blitter = None
+        self._blitter: Blitter | None = None
         self._render(full=True)
 
     # ------------------------------------------------------------------ building
@@ -334,7 +334,7 @@ class Explorer:
                 self.energy.update(design, report=report)
                 full |= self.energy.ax.get_xlim() != xlim
                 full |= self._fit_energy_limits(previous=ylim)
-                if clim is not None and self.energy.image.get_clim() != clim:
+                if clim is not None and self.energy.image is not None and self.energy.image.get_clim() != clim:
                     full = True
                 self.energy.ax.set_title(self._verdict(), fontsize=FONT["title"], y=1.0)
             self.valid_values = dict(self.values)
@@ -452,7 +452,7 @@ class Explorer:
         self._sliders = {}
         layout = w.Layout(width="420px")
         style = {"description_width": "110px"}
-        for name, (lo, hi, step, value) in self.params.items():
+        for name, (lo, hi, step, _value) in self.params.items():
             s = w.FloatSlider(value=self.values[name], min=lo, max=hi, step=step, description=name,
                               continuous_update=True, readout_format=".4g", layout=layout, style=style)
             s.observe(self._on_param(name), names="value")
@@ -528,7 +528,7 @@ class Explorer:
         try:
             for name, s in self._sliders.items():
                 s.value = self.values[name]
-            for i, (name, s) in enumerate(self._q_sliders.items()):
+            for i, s in enumerate(self._q_sliders.values()):
                 lo, hi = (float(v) for v in self._q_factor(i) * np.asarray(self.design.q_range[i]))
                 if (s.min, s.max) != (lo, hi):
                     if lo > s.max:

@@ -311,7 +311,7 @@ class Blitter:
     ((50, 100, 3), (50, 100, 3), 1)
     """
 
-    def __init__(self, fig, dynamic: Callable[[], list]):
+    def __init__(self, fig, dynamic: Callable[[], list]) -> None:
         self.fig = fig
         self.dynamic = dynamic
         self._bg = None

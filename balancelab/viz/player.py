@@ -150,7 +150,7 @@ class Player:
         Number of frames it holds.
     """
 
-    def __init__(self, html: str, frames: int):
+    def __init__(self, html: str, frames: int) -> None:
         self.html, self.frames = html, int(frames)
 
     def _repr_html_(self) -> str:
@@ -216,5 +216,5 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
         raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
     html = offline_page(anim.to_jshtml(default_mode=default_mode))
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
-    plt.close(anim._fig)  # matplotlib keeps the figure only under this name
+    plt.close(anim._fig)  # type: ignore[attr-defined]  # matplotlib keeps the figure only under this private name
     return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames)), frames)

@@ -12,7 +12,7 @@ Layer: viz; imports ``balancelab.core``, ``balancelab.methods.singh``.
 """
 from __future__ import annotations
 
-from typing import Callable, Mapping, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -101,7 +101,7 @@ def lever_valley(weight: float = 10.0, length: float = 0.5, a_range=(0.05, 1.0),
     if kind not in ("contour", "surface"):
         raise ValueError(f"kind must be 'contour' or 'surface', got {kind!r}")
     n = count("n", n)
-    A, B = np.meshgrid(np.linspace(*rngs[0], n), np.linspace(*rngs[1], n))
+    A, B = np.meshgrid(np.linspace(rngs[0][0], rngs[0][1], n), np.linspace(rngs[1][0], rngs[1][1], n))
     PE = _lever_energies(W, length, A, B)
     v = np.linspace(max(rngs[0][0], rngs[1][0]), min(rngs[0][1], rngs[1][1]), 25)
     pe_v = _lever_energies(W, length, v, v)
@@ -150,7 +150,7 @@ def _valley_contour(ax, A, B, PE, v, pe_v, label: str):
 
 # -------------------------------------------------------------------- families
 def _family_values(factory: Callable, name: str, values, fixed: Mapping | None):
-    out = []
+    out: list[tuple[float, Any, Exception | None]] = []
     for v in values:
         try:
             out.append((float(v), factory(**{**(fixed or {}), name: v}), None))
@@ -246,12 +246,12 @@ def _design_family(good, q, points) -> tuple[dict, dict]:
     names = list(points) if points is not None else list(first.labels)
     loci: dict = {}
     for lab in names:
-        pts = []
+        rows = []
         for _, d in good:
             if lab not in d.labels:
                 raise ValueError(f"point {lab!r} is not a label of {d.name}; labels: {list(d.labels)}")
-            pts.append(d.world_points(q, [d.labels[lab]])[0])
-        pts = np.array(pts)
+            rows.append(d.world_points(q, [d.labels[lab]])[0])
+        pts = np.array(rows)
         if points is not None or np.ptp(pts, axis=0).max() > 1e-12:
             loci[lab] = pts
     # spring constants by spring name (NaN where a design has no such spring)

@@ -16,11 +16,20 @@ import math
 import numpy as np
 
 from ..core.elements import Pulley, Spring
-from ..methods.realize import pulley_string
+from ..methods.realize import NoncircularProfile, pulley_string
 from .frame import STYLE
 
 __all__ = ["cable_angle", "cable_coil_end", "cable_coil_ends", "cable_path", "coil_path", "gas_path", "profile_outline",
            "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path", "spring_style"]
+
+
+def _profile(spring: Spring) -> NoncircularProfile:
+    """The non-circular pulley of a cable spring, or a TypeError naming the spring."""
+    prof = spring.cable
+    if not isinstance(prof, NoncircularProfile):
+        raise TypeError(f"spring {spring.name or spring}: its realization must be a NoncircularProfile to be "
+                        f"drawn as a cable, got {type(spring.realization).__name__}")
+    return prof
 
 
 def coil_path(a, b, width: float, turns: int = 7, lead: float = 0.15):
@@ -271,7 +280,7 @@ def cable_angle(spring: Spring, pb) -> float:
     >>> round(cable_angle(s, d.world_points(0.4, [s.b])[0]), 12)
     0.4
     """
-    prof = spring.cable
+    prof = _profile(spring)
     local = np.asarray(spring.b.point, dtype=float)
     rel = np.asarray(pb, dtype=float) - np.asarray(prof.pivot)
     angle = math.atan2(rel[1], rel[0]) - math.atan2(local[1], local[0])
@@ -303,7 +312,7 @@ def cable_coil_ends(spring: Spring, theta) -> tuple[np.ndarray, np.ndarray]:
     >>> bool(np.allclose(fixed, d.parameters["spring_anchor"]))
     True
     """
-    prof = spring.cable
+    prof = _profile(spring)
     length = np.asarray(prof.cable(theta).path - prof.cable_length)[..., None]
     eyelet = np.add(prof.pivot, prof.anchor)
     if prof.spring_anchor is None:
@@ -325,7 +334,7 @@ def profile_outline(spring: Spring, theta, n: int = 120):
 
     The profile's points come from the design (``spring.cable``), carried to the world.
     """
-    prof = spring.cable
+    prof = _profile(spring)
     pts = prof.world(theta, prof.local_points(np.linspace(-1.0, 1.0, n)))
     hub = prof.world(theta, np.zeros((1, 2)))
     closed = np.concatenate([pts, hub, pts[:1]])
@@ -351,7 +360,7 @@ def cable_path(spring: Spring, theta: float, size: float):
     >>> bool(np.allclose([x[-1], y[-1]], d.world_points(0.3, [d.springs[0].b])[0]))
     True
     """
-    prof = spring.cable
+    prof = _profile(spring)
     cab = prof.cable(theta)
     eyelet = np.add(prof.pivot, prof.anchor)
     fixed, hook = cable_coil_ends(spring, theta)

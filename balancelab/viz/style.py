@@ -28,6 +28,7 @@ import base64
 import html
 import io
 import textwrap
+from typing import Any
 
 import numpy as np
 
@@ -50,7 +51,7 @@ MIN_SCALE = MIN_FONT_PX / (MIN_FONT_PT * DPI / 72.0)
 FONT = {"title": 10.0, "label": 10.0, "tick": 9.0, "legend": 9.0, "annotation": 9.5, "note": 9.0}
 
 #: matplotlib rcParams of the house style.
-RC = {
+RC: dict[str, Any] = {
     "figure.dpi": DPI,
     "savefig.dpi": DPI,
     "font.size": FONT["label"],
@@ -75,7 +76,7 @@ def use() -> None:
     """
     import matplotlib
 
-    matplotlib.rcParams.update(RC)
+    matplotlib.rcParams.update(RC)  # type: ignore[arg-type]  # valid keys; the stubs want each as a literal
 
 
 def fit_title(ax, text: str, fontsize: float | None = None, max_lines: int = 3, **kwargs):
@@ -164,7 +165,9 @@ def arrange_labels(labels: dict, points: dict, texts: dict, obstacles=(), previo
     size = float(labels[names[0]].get_fontsize())
     frame = np.asarray(ax.bbox.extents, dtype=float) * to_pt
     previous = previous or {}
-    placed, done, dirs = [], set(), {}
+    placed: list[np.ndarray] = []
+    done: set[str] = set()
+    dirs: dict[str, Any] = {}
     for i, name in enumerate(names):
         if name in done:
             continue

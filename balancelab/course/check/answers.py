@@ -371,8 +371,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     if isinstance(answer, (str,)):
         try:
             expr = sp.sympify(answer, locals=dict(allowed))
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError):
-            raise AnswerError(f"{what.capitalize()} {_short(answer)} could not be read as a formula.", hint)
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError) as err:
+            raise AnswerError(f"{what.capitalize()} {_short(answer)} could not be read as a formula.", hint) from err
     elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
         expr = sp.sympify(answer)
     else:
@@ -399,8 +399,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     f_e = sp.lambdify(syms, expected, "numpy")
     same = True
     for _ in range(6):
-        vals = rng.uniform(0.3, 2.0, len(syms))
-        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(vals, syms)]
+        drawn = rng.uniform(0.3, 2.0, len(syms))
+        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(drawn, syms)]
         a, e = complex(f_a(*vals)), complex(f_e(*vals))
         if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
             same = False

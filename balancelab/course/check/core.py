@@ -81,7 +81,7 @@ class AnswerError(ValueError):
     ('k must be positive.', 'A spring rate is > 0 N/m.')
     """
 
-    def __init__(self, message: str, hint: str = ""):
+    def __init__(self, message: str, hint: str = "") -> None:
         super().__init__(message)
         self.hint = hint
 
@@ -130,7 +130,7 @@ class Task:
     variable: str
     kind: str
     expects: str
-    judge: Callable[[Any], tuple[bool, str, str]] = field(repr=False, compare=False)
+    judge: Callable[..., tuple[bool, str, str]] = field(repr=False, compare=False)  # (answer[, numbers])
     points: float = 1.0
     numbers: Callable | None = field(default=None, repr=False, compare=False)
     distinct: tuple | None = field(default=None, repr=False, compare=False)
@@ -268,18 +268,21 @@ def _drawn(task_id: str, student: str) -> dict:
     import numpy as np
 
     t = _TASKS[task_id]
+    if t.numbers is None:
+        raise ValueError(f"task_id: task {task_id} has no personal numbers")
+    draw = t.numbers
     if not student:
-        return dict(t.numbers(None))
+        return dict(draw(None))
     seed = int.from_bytes(hashlib.sha256(f"balancelab:{t.id}:{student}".encode()).digest()[:8], "big")
     rng = np.random.default_rng(seed)
-    mine = dict(t.numbers(rng))
+    mine = dict(draw(rng))
     if t.distinct is not None:
         value, rel = t.distinct
-        published = value(t.numbers(None))
+        published = value(draw(None))
         for _ in range(50):
             if abs(value(mine) / published - 1) > rel:
                 break
-            mine = dict(t.numbers(rng))
+            mine = dict(draw(rng))
     return mine
 
 

@@ -7,6 +7,8 @@ names (crank ``AD``, coupler ``DC``, rocker ``BC``).
 """
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ...core.design import Design
@@ -25,7 +27,7 @@ LAMP_ARM = dict(mass=1.2, length=0.45, link_mass=0.6, counter_mass=3.0)
 #: Four-bar of lab 1 (m, kg) and the limits of its design task. Crank and rocker are
 #: uniform bars; the coupler's centre of mass is on the coupler, 0.2 m from the crank joint.
 #: ``masses`` and ``coms`` are of crank, coupler, rocker (local frames).
-LAB1_FOURBAR = dict(A=(0.0, 0.0), B=(0.6, 0.0), crank=0.2, coupler=0.5, rocker=0.4,
+LAB1_FOURBAR: dict[str, Any] = dict(A=(0.0, 0.0), B=(0.6, 0.0), crank=0.2, coupler=0.5, rocker=0.4,
                     masses=(0.8, 1.2, 1.0), coms=((0.1, 0.0), (0.2, 0.0), (0.2, 0.0)),
                     max_mass=6.0, max_radius=0.25)
 

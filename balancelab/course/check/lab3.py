@@ -1,6 +1,8 @@
 """Lab 3, building a ZFL spring: a string over a pulley, a negative free length, an ordinary spring."""
 from __future__ import annotations
 
+from typing import Any
+
 import functools
 import math
 
@@ -17,7 +19,7 @@ __all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "lab3_torque_error"]
 
 #: Lab 3's lever (kg, m) and its limits: torque errors are fractions of ``m g r`` with
 #: ``r = length``; spring ends within ``reach_max`` (m) of the pivot in task 3.3.
-LAB3_LEVER = dict(mass=2.0, length=0.5, b=0.3, c=0.2, pulley_error=0.01, free_length=0.1,
+LAB3_LEVER: dict[str, Any] = dict(mass=2.0, length=0.5, b=0.3, c=0.2, pulley_error=0.01, free_length=0.1,
                   theta_range=(-math.pi / 3, math.pi / 3), torque_error=0.03, reach_max=0.4)
 #: Task 3.2: an ordinary spring (N/m, m) and the rate of its partner (N/m).
 PARTNER_SPRINGS = dict(k=400.0, free_length=0.05, k_partner=250.0)

@@ -1,6 +1,8 @@
 """Lab 4, serial 2R arms: the lecture's parallelogram arm, Singh's minimum-preload 2R, Lustig's method."""
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ...core.design import Design
@@ -15,10 +17,10 @@ from .data import DesignData, decode_answer, encode_answer
 __all__ = ["LAB4_PARALLELOGRAM", "LAB4_SINGH", "lab4_singh_arm"]
 
 #: The 2R arm of lab 4's parallelogram task (kg, m), as :func:`serial_2r_parallelogram` takes it.
-LAB4_PARALLELOGRAM = dict(masses=(1.2, 0.8), length=0.45, coms=((0.2, 0.0), (0.3, 0.0)),
+LAB4_PARALLELOGRAM: dict[str, Any] = dict(masses=(1.2, 0.8), length=0.45, coms=((0.2, 0.0), (0.3, 0.0)),
                           b=(0.15, 0.12), c=(0.1, 0.1))
 #: Singh & Ananthasuresh's 2R (N, m) and the limits of lab 4's design task (N/m, m).
-LAB4_SINGH = dict(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), length=1.5, k_max=9.0, anchor_max=3.2)
+LAB4_SINGH: dict[str, Any] = dict(weights=(10.0, 20.0), coms=((1.0, 0.5), (2.0, 0.0)), length=1.5, k_max=9.0, anchor_max=3.2)
 
 
 def lab4_singh_arm(a_x=None) -> Design:
@@ -104,7 +106,7 @@ def _student_arm(answer) -> Design:
     try:
         return lab4_singh_arm(ax)
     except (ValueError, TypeError) as e:
-        raise AnswerError(f"These free choices give no design: {e}", "Pick other values of a_x.")
+        raise AnswerError(f"These free choices give no design: {e}", "Pick other values of a_x.") from e
 
 
 @register_task("4.3", "minimum-preload 2R whose springs are soft and anchored close (open design)", "arm_design",

@@ -1,6 +1,8 @@
 """Lab 5, four-bars: the lecture's two-spring four-bar, Singh's four-bar, Deepak's technique 2."""
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ...core.design import Design
@@ -13,7 +15,7 @@ from .core import AnswerError, register_task
 __all__ = ["LAB5_TECHNIQUE2", "lab5_technique2"]
 
 #: Lab 5's spring-loaded four-bar (technique 2) and the box its springs must fit in (m, N/m).
-LAB5_TECHNIQUE2 = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
+LAB5_TECHNIQUE2: dict[str, Any] = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
 
 
 def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
@@ -42,7 +44,7 @@ def lab5_technique2(base: str = "A", h: float = 0.15) -> Design:
 def _spring_extent(design: Design, n: int = 300) -> np.ndarray:
     """Bounding box ``[[xmin, ymin], [xmax, ymax]]`` (m) of every spring end over ``n`` configurations."""
     q = design.sample(n)
-    pts = [design.world_points(q, [tuple(at)]).reshape(-1, 2) for s in design.springs for at in (s.a, s.b)]
+    pts = [design.world_points(q, [at]).reshape(-1, 2) for s in design.springs for at in (s.a, s.b)]
     P = np.concatenate(pts)
     return np.array([P.min(axis=0), P.max(axis=0)])
 
@@ -73,7 +75,7 @@ def _t53(answer):
     try:
         d = lab5_technique2(a["base"], h)
     except (ValueError, TypeError) as e:
-        raise AnswerError(f"This choice gives no design: {e}", "Try another h.")
+        raise AnswerError(f"This choice gives no design: {e}", "Try another h.") from e
     p = LAB5_TECHNIQUE2
     lo, hi = np.array(p["box"][0]), np.array(p["box"][1])
     ext = _spring_extent(d)

@@ -71,7 +71,7 @@ def _t63(answer):
     try:
         d = lab6_scissors(l10, k1, k2)
     except (ValueError, TypeError) as e:
-        raise AnswerError(f"This choice gives no lift: {e}", "Pick another l10.")
+        raise AnswerError(f"This choice gives no lift: {e}", "Pick another l10.") from e
     cons = [(k1 <= p["k_max"] * (1 + 1e-9) and k2 <= p["k_max"] * (1 + 1e-9),
              f"a spring stiffer than {p['k_max']:g} N/m"),
             (l10 <= p["l10_max"] + 1e-12, f"l10 longer than {p['l10_max']} m")]

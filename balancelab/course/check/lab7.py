@@ -17,6 +17,8 @@ it needs from the answer (plain numbers, strings and tuples) and the library:
 """
 from __future__ import annotations
 
+from typing import Any
+
 import functools
 
 from ...core.design import Design
@@ -31,14 +33,14 @@ __all__ = ["LAB7_ARM", "LAB7_LAMP", "LAB7_SLIDER", "lab7_arm", "lab7_candidates"
            "lamp_with_springs"]
 
 #: Lab 7's 3R arm (m, kg): other numbers than chapter 7's, so the chapter does not print the answers.
-LAB7_ARM = dict(lengths=(0.45, 0.35, 0.25), masses=(1.8, 1.2, 0.8), lamp=0.4)
+LAB7_ARM: dict[str, Any] = dict(lengths=(0.45, 0.35, 0.25), masses=(1.8, 1.2, 0.8), lamp=0.4)
 
 #: Lab 7's slider-crank (m, kg; the rod's mass at ``rod_com`` along it) and the box of its counterweight (m).
-LAB7_SLIDER = dict(crank=0.25, rod=0.7, crank_mass=1.2, rod_mass=0.8, rod_com=0.3, slider_mass=1.5,
+LAB7_SLIDER: dict[str, Any] = dict(crank=0.25, rod=0.7, crank_mass=1.2, rod_mass=0.8, rod_com=0.3, slider_mass=1.5,
                    box=((-0.5, 0.5), (-0.5, 0.5)))
 
 #: The open design task's constraints: anchors (on the ground) in ``box`` (m), rates up to ``k_max`` (N/m).
-LAB7_LAMP = dict(box=((-0.15, 0.15), (0.0, 0.3)), k_max=300.0, max_springs=3)
+LAB7_LAMP: dict[str, Any] = dict(box=((-0.15, 0.15), (0.0, 0.3)), k_max=300.0, max_springs=3)
 
 
 def lab7_arm(numbers: dict | None = None) -> Design:
@@ -150,7 +152,7 @@ def lab7_slider_crank() -> Design:
     return lk.build(guess={"crank": 1.0})
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _slider_mass() -> float:
     d = balance(lab7_slider_crank(), counterweights=[("crank", None)], objective="min_mass", box=LAB7_SLIDER["box"])
     return float(d.parameters["counter_mass1"])

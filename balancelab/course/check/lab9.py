@@ -23,6 +23,7 @@ The link's load is personal (``task_numbers("9.1")``). Expected values are never
 from __future__ import annotations
 
 import math
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -63,7 +64,7 @@ def _link_numbers(rng) -> dict:
     return dict(mass=round(float(rng.uniform(1.9, 2.5)), 2), length=round(float(rng.uniform(0.46, 0.6)), 3))
 
 
-def lab9_spring(spring) -> ExtensionSpring:
+def lab9_spring(spring: Mapping[str, float]) -> ExtensionSpring:
     """The submitted spring ``{'d': m, 'D': m, 'Na': coils, 'F_i': N}`` as an :class:`ExtensionSpring`.
 
     Parameters
@@ -132,7 +133,7 @@ def _curvature_radii(pts: np.ndarray) -> np.ndarray:
         return ab * bc * ca / (2 * twice_area)
 
 
-def pulley_energy_variation(answer, load) -> tuple[float, np.ndarray]:
+def pulley_energy_variation(answer: Mapping[str, Any], load: Mapping[str, float]) -> tuple[float, np.ndarray]:
     """Relative energy variation of the link with the submitted pulley, and the cable's tensions (N).
 
     Parameters
@@ -156,7 +157,7 @@ def pulley_energy_variation(answer, load) -> tuple[float, np.ndarray]:
     return float(np.ptp(energy) / np.ptp(v_load)), spring.k * stretch
 
 
-def pulley_problems(answer) -> list[str]:
+def pulley_problems(answer: Mapping[str, Any]) -> list[str]:
     """What keeps the submitted pulley from being made or wound (empty when nothing does).
 
     Parameters

@@ -50,7 +50,7 @@ class Linkage:
     (('ground', 'crank', 'coupler', 'rocker'), ('theta_1',), 1)
     """
 
-    def __init__(self, name: str = "linkage"):
+    def __init__(self, name: str = "linkage") -> None:
         self.name = str(name)
         self._bodies: list[str] = ["ground"]
         self._joints: list[Joint] = []

@@ -83,7 +83,7 @@ class LinkageKinematics(Kinematics):
 
     def __init__(self, nbodies: int, joints: Sequence[Joint], driving: Sequence[int] | None = None,
                  guess: Mapping[int, float] | None = None, names: Sequence[str] | None = None,
-                 sliders: Sequence[Slider] = (), strokes: Sequence | None = None):
+                 sliders: Sequence[Slider] = (), strokes: Sequence | None = None) -> None:
         self.nbodies = int(nbodies)
         self.joints = tuple(Joint(*j) for j in joints)
         self.sliders = tuple(p if isinstance(p, Slider) else Slider(*p) for p in sliders)
@@ -111,7 +111,8 @@ class LinkageKinematics(Kinematics):
         self.descriptions = tuple(self._describe(b) for b in self.driving)
         self.independent_symbols = True if not self.solved else None
         self.full_turn = False
-        self._table = self._grid = None
+        self._table: tuple[np.ndarray, np.ndarray] | None = None  # (driving angles, Hermite coefficients)
+        self._grid: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None  # (lowest q, steps, solutions)
         if not self.topology.loops:
             self.full_turn = not any(b >= self.nbodies for b in self.driving)
             self.q_range = np.array([self._span(b) for b in self.driving]).reshape(-1, 2)
@@ -333,7 +334,7 @@ class LinkageKinematics(Kinematics):
         m = max(9, int(round(4000 ** (1 / dof))) | 1)
         q0 = self.assembled[list(self.driving)]
         axes = [q0[i] + np.linspace(-np.pi, np.pi, m) if d < self.nbodies else
-                np.linspace(*self.strokes[d - self.nbodies], m) for i, d in enumerate(self.driving)]
+                np.linspace(self.strokes[d - self.nbodies][0], self.strokes[d - self.nbodies][1], m) for i, d in enumerate(self.driving)]
         shape = (m,) * dof
         sol = np.full(shape + (self.nvar,), np.nan)
         seen = np.zeros(shape, dtype=bool)
@@ -349,13 +350,14 @@ class LinkageKinematics(Kinematics):
         sol[centre], seen[centre] = self.assembled, True
         frontier = [centre]
         while frontier:
-            parents, children = {}, []
+            parents: dict[tuple[int, ...], tuple[int, ...]] = {}
+            children: list[tuple[int, ...]] = []
             for node in frontier:
                 for i in range(dof):
                     for s in (-1, 1):
-                        child = list(node)
-                        child[i] += s
-                        child = tuple(child)
+                        moved = list(node)
+                        moved[i] += s
+                        child = tuple(moved)
                         if 0 <= child[i] < m and not seen[child]:
                             seen[child] = True
                             parents[child] = node
@@ -392,6 +394,7 @@ class LinkageKinematics(Kinematics):
             th[..., self.dependent] = ((c[..., 3, :] * w + c[..., 2, :]) * w + c[..., 1, :]) * w + c[..., 0, :]
             th[..., self.driving[0]] = q[..., 0]
             return th, np.ones(q.shape[:-1], dtype=bool)
+        assert self._grid is not None  # set by _fill_grid when there is no table
         lo, h, sol = self._grid
         m = sol.shape[0]
         turns = np.floor((q - lo) / (2 * np.pi)) * 2 * np.pi if self.full_turn else 0.0

@@ -118,7 +118,7 @@ class Topology:
     ([], [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]], 3)
     """
 
-    def __init__(self, nbodies: int, joints: Sequence[Joint], sliders: Sequence[Slider] = (), size: float = 1.0):
+    def __init__(self, nbodies: int, joints: Sequence[Joint], sliders: Sequence[Slider] = (), size: float = 1.0) -> None:
         self.nbodies = int(nbodies)
         self.joints = [Joint(*j) for j in joints]
         self.sliders = [p if isinstance(p, Slider) else Slider(*p) for p in sliders]

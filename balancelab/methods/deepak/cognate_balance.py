@@ -207,11 +207,12 @@ def _three_complex(name: str, value) -> tuple:
         items = [complex(v) if not isinstance(v, (str, bytes, bool)) else None for v in value]
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be three complex numbers, got {value!r}") from None
-    if len(items) != 3 or None in items:
+    numbers = [v for v in items if v is not None]
+    if len(items) != 3 or len(numbers) != 3:
         raise ValueError(f"{name} must be three complex numbers, got {value!r}")
-    if not all(math.isfinite(v.real) and math.isfinite(v.imag) and abs(v) <= MAX_MAGNITUDE for v in items):
+    if not all(math.isfinite(v.real) and math.isfinite(v.imag) and abs(v) <= MAX_MAGNITUDE for v in numbers):
         raise ValueError(f"{name} must be finite, of magnitude <= {MAX_MAGNITUDE:g}, got {value!r}")
-    return tuple(items)
+    return tuple(numbers)
 
 
 def similar_triangle_family(W: Sequence[complex], d: Sequence[complex]
@@ -324,12 +325,17 @@ def cognate_family(fourbar: FourBar, K: Point, k_l: float, technique: int = 2, p
     W, L, dirs, ms, kes = [], [], [], [], []
     for cg in cgs:
         if technique == 2:
-            p = technique2_parameters(cg, K, k_l, parallelogram_base, 1.0)
-            W.append(as_complex(p.W)), L.append(as_complex(K)), ms.append(1.0)
+            p2 = technique2_parameters(cg, K, k_l, parallelogram_base, 1.0)
+            W.append(as_complex(p2.W))
+            L.append(as_complex(K))
+            ms.append(1.0)
+            dirs.append(as_complex(p2.direction))
         else:
-            p = technique3_parameters(cg, K, k_l, plagiograph_base, parallelogram_base, 1.0)
-            W.append(as_complex(p.W)), L.append(as_complex(p.L)), ms.append(p.m)
-        dirs.append(as_complex(p.direction))
+            p3 = technique3_parameters(cg, K, k_l, plagiograph_base, parallelogram_base, 1.0)
+            W.append(as_complex(p3.W))
+            L.append(as_complex(p3.L))
+            ms.append(p3.m)
+            dirs.append(as_complex(p3.direction))
         kes.append(k_l / ms[-1] ** 2)
     c, sigma, t = similar_triangle_family(W, dirs)
     scale = max(abs(W[0] - W[1]), abs(W[1] - W[2]), abs(W[2] - W[0]))
@@ -398,7 +404,10 @@ def kb_ratio_from_triangle(triangle: Sequence[Point], K: Point, technique: int =
             Li, m = U + rho * (Kc - U), abs(rho)
         if abs(Wi - Li) == 0:
             raise ValueError(f"the equivalent load anchor of cognate {i + 1} is on its base pivot")
-        W.append(Wi), L.append(Li), ms.append(m), dirs.append((Wi - Li) / abs(Wi - Li))
+        W.append(Wi)
+        L.append(Li)
+        ms.append(m)
+        dirs.append((Wi - Li) / abs(Wi - Li))
     c, sigma, t = similar_triangle_family(W, dirs)
     scale = max(abs(W[0] - W[1]), abs(W[1] - W[2]), abs(W[2] - W[0]))
     case, P = _classify(sigma, c, t, scale)
@@ -461,4 +470,4 @@ def balance_cognates(fourbar: FourBar, K: Point, k_l: float, technique: int = 2,
         else:
             d = technique3(cg, K, k_l, plagiograph_base, parallelogram_base, mem[i]["h"], driver=drv)
         out.append(d.replace(name=f"cognate {i + 1}: " + d.name))
-    return tuple(out)
+    return out[0], out[1], out[2]

@@ -118,7 +118,7 @@ def cognates(fourbar: FourBar) -> tuple[FourBar, FourBar, FourBar]:
         th = float(np.angle(np.exp(1j * a2)))
         br = _branch_from_state(as_complex(p1), th, lens[0], float(a3), as_complex(p2))
         out.append(FourBar(p1, p2, *lens, as_point(e), br, circuit=th))
-    return tuple(out)
+    return out[0], out[1], out[2]
 
 
 def _cognate_angles(fourbar: FourBar, st: dict):
@@ -277,6 +277,6 @@ def cognate_designs(fourbar: FourBar, K: Point, k_l: float) -> tuple[Design, Des
     [False, False, False]
     """
     K = planar_point("K (m)", K)
-    return tuple(cognate_design(fourbar, i, K, k_l) for i in (1, 2, 3))
+    return cognate_design(fourbar, 1, K, k_l), cognate_design(fourbar, 2, K, k_l), cognate_design(fourbar, 3, K, k_l)
 
 

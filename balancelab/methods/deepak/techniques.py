@@ -248,9 +248,9 @@ def technique2_family(fourbar: FourBar, K: Point, k_l: float, base: str, h_value
     instance_of("fourbar", fourbar, FourBar, "a FourBar (balancelab.mechanisms.FourBar)")
     pivot_name("base", base)
     h_values = real_array("h_values (m)", h_values)
-    K = as_complex(planar_point("K", K))
+    Kc = as_complex(planar_point("K", K))
     k_l = finite_real("k_l (N/m)", k_l, positive=True)
-    return balancing_family(fourbar.pivot(base), K, k_l, h_values)
+    return balancing_family(fourbar.pivot(base), Kc, k_l, h_values)
 
 
 # ----------------------------------------------------------------------- technique 3

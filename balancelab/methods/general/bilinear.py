@@ -19,9 +19,14 @@ Layer: methods.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ...core.errors import InfeasibleDesign
+
+if TYPE_CHECKING:
+    from ...core.design import Design
 from .problem import columns, lp_constraints
 from .solver import column_norms, rank_of, solve
 from .verdicts import infeasible
@@ -70,6 +75,7 @@ def rounds(design, blocks, both, q, objective):
                 b.ends[b.free] = (b.ends[b.free][0], (mx / k, my / k))
                 b.free = 1 - b.free
                 b.ends[b.free] = (b.ends[b.free][0], None)
+    assert best is not None  # the first round either balances or raised
     value, p, sol, ends, frees = best
     for b, e, f in zip(blocks, ends, frees):
         b.ends, b.free = e, f
@@ -178,19 +184,19 @@ def search(design, blocks, both, q, objective, default_point, size: float):
         return best[1], best[2]
     saved = _lift(blocks, both)
     lifted = columns(design, blocks, q)
-    err = infeasible(lifted, column_norms(lifted), objective, "; springs with both ends free, lifted")
+    relaxed = infeasible(lifted, column_norms(lifted), objective, "; springs with both ends free, lifted")
     _restore(blocks, saved)
-    if err.verdict == "impossible":
-        raise err
-    if err.verdict == "box" and last is not None and getattr(last, "verdict", None) == "box":
+    if relaxed.verdict == "impossible":
+        raise relaxed
+    if relaxed.verdict == "box" and last is not None and getattr(last, "verdict", None) == "box":
         raise last
     out = InfeasibleDesign(
         f"no balanced design found from these candidates (objective {objective!r}): the search over "
         f"{len(start_points(design, blocks, both, q, default_point, size))} starts (and {NLS_STARTS} nonlinear "
         "least-squares fits) for the springs with both ends free found none, but this is NOT proved impossible: the linear relaxation (the moments k p_a, k p_b, "
-        f"k p_a p_b^T as unknowns) has a solution ({err.verdict!r}: {err}); try fixing one end of a spring at a "
+        f"k p_a p_b^T as unknowns) has a solution ({relaxed.verdict!r}: {relaxed}); try fixing one end of a spring at a "
         "point you choose, or a wider box")
-    out.verdict, out.box = "not_found", getattr(err, "box", None)
+    out.verdict, out.box = "not_found", getattr(relaxed, "box", None)
     raise out
 
 
@@ -198,7 +204,7 @@ def search(design, blocks, both, q, objective, default_point, size: float):
 NLS_STARTS = 8
 
 
-def nls_starts(design, blocks, both, q, keep: int = 4) -> list:
+def nls_starts(design: Design, blocks: list, both: list, q: np.ndarray, keep: int = 4) -> list:
     """Starts ``[(fixed end index, [point for each both-free spring])]`` from nonlinear least squares.
 
     The energy of the both-free springs is fitted in their real unknowns ``(log k, p_a, p_b)`` so that,

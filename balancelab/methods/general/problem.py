@@ -141,7 +141,8 @@ def columns(design, blocks, q) -> Problem:
     """
     poses = np.array(design.poses(q), dtype=float, copy=True)
     poses[..., :2] -= reference_point(design)  # about a ground point: a far origin costs no digits
-    cols, mean = [], []
+    cols: list[np.ndarray] = []
+    mean: list[float] = []
     for block in blocks:
         new = _spring_columns(poses, block) if block.kind == "spring" else _mass_columns(poses, block)
         block.cols = list(range(len(cols), len(cols) + len(new)))
@@ -194,7 +195,7 @@ def harmonics(design, poses, residual, top: int = 4, q=None) -> list[tuple[str, 
             if np.ptp(th[:, b]) > 1e-9:  # bodies that never turn have no harmonics
                 feats += [sv * np.cos(th[:, b]), sv * np.sin(th[:, b])]
                 names += [f"{sname} cos θ_{b}", f"{sname} sin θ_{b}"]
-    keep = []  # constant features name nothing; a feature equal to an earlier one (bodies turning alike) once
+    keep: list[int] = []  # constant features name nothing; a feature equal to an earlier one (bodies turning alike) once
     for i, f in enumerate(feats):
         if np.ptp(f) > 1e-12 and not any(np.allclose(f, feats[j], atol=1e-9) for j in keep):
             keep.append(i)
@@ -211,7 +212,7 @@ def harmonics(design, poses, residual, top: int = 4, q=None) -> list[tuple[str, 
 def lp_constraints(p: Problem, S: np.ndarray):
     """Bounds and box inequalities on the scaled variables ``y = x / S``."""
     n = p.nvar
-    bounds = [(None, None)] * n
+    bounds: list[tuple[float | None, float | None]] = [(None, None)] * n
     rows = []
     for b in p.blocks:
         bounds[b.cols[0]] = (0.0, None)

@@ -29,7 +29,7 @@ _RANK_TOL = 1e-9
 class Solution:
     """Values ``x`` of the unknowns, the rank of the conditions and the free choices left."""
 
-    def __init__(self, x: np.ndarray, rank: int, nvar: int, residual: float):
+    def __init__(self, x: np.ndarray, rank: int, nvar: int, residual: float) -> None:
         self.x, self.rank, self.nvar, self.residual = x, int(rank), int(nvar), residual
         self.unique: bool | None = None
 

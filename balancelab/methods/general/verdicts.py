@@ -155,7 +155,7 @@ def _wider(p: Problem, D: np.ndarray):
     times, that has one: ``(x, half-width)``, or None."""
     U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
     r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
-    sigma = max(np.linalg.norm(p.v), 1e-300)
+    sigma = max(float(np.linalg.norm(p.v)), 1e-300)
     base = max([np.abs(b.box).max() for b in p.blocks] + [1e-12])
     factor = 2.0
     while factor <= WIDER * 1.0001:

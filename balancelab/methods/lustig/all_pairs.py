@@ -57,7 +57,7 @@ def _distal_attachments(chain: SerialChain, pairs: list, rates: dict, a: dict) -
     Ls = (0.0,) + lengths
     # first moment of the weights on and beyond body u, in body u's frame
     mu = [masses[u - 1] * complex(*coms[u - 1]) + sum(masses[u:]) * Ls[u] for u in range(1, n + 1)]
-    b = {}
+    b: dict[tuple[int, int], tuple[float, float]] = {}
     for K_ in range(1, n + 1):          # distal body of the block
         for I in range(0, K_):          # proximal body of the block
             total = -1j * G * mu[K_ - 1] if I == 0 else 0j
@@ -74,6 +74,7 @@ def _distal_attachments(chain: SerialChain, pairs: list, rates: dict, a: dict) -
                 else:
                     cK = complex(Ls[K_])
                 total += rates[(i, j)] * cI.conjugate() * cK
+            assert own is not None  # the pair (I, K) itself is among the pairs
             z = -total / own
             b[(I, K_)] = (z.real, z.imag)
     return b

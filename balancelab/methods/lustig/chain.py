@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping, Sequence
+from typing import TYPE_CHECKING, Mapping, Sequence
 
 import numpy as np
 
@@ -98,10 +98,14 @@ class SerialChain:
     (2, ((0, 2),))
     """
 
-    lengths: tuple
-    masses: tuple
-    coms: tuple
-    springs: tuple = ()
+    lengths: tuple[float, ...]
+    masses: tuple[float, ...]
+    coms: tuple[tuple[float, float], ...]
+    springs: tuple[Spring, ...] = ()
+
+    if TYPE_CHECKING:  # the generated __init__ takes any sequences and stores tuples
+        def __init__(self, lengths: Sequence[float], masses: Sequence[float],
+                     coms: Sequence[Sequence[float]], springs: Sequence[Spring] = ()) -> None: ...
 
     def __post_init__(self) -> None:
         lengths = finite_reals("lengths (m)", self.lengths, None, positive=True)
@@ -158,7 +162,7 @@ class SerialChain:
         return out
 
     @classmethod
-    def from_values(cls, n: int, topology, values: Mapping[str, float]) -> "SerialChain":
+    def from_values(cls, n: int, topology, values: Mapping[str, float]) -> SerialChain:
         """Build a chain from the paper-named numbers of :meth:`values`.
 
         Parameters
@@ -233,13 +237,13 @@ class SerialChain:
 
     def _labels(self) -> dict:
         """Joints ``J1..``, centres of mass ``S2..`` and spring ends ``A1.., B1..``."""
-        labels = {"J1": (0, (0.0, 0.0))}
+        labels: dict[str, tuple[int, tuple[float, float]]] = {"J1": (0, (0.0, 0.0))}
         for i in range(self.n):
             labels[f"J{i + 2}"] = (i + 1, (self.lengths[i], 0.0))
             labels[f"S{i + 2}"] = (i + 1, self.coms[i])
         for j, s in enumerate(self.springs, start=1):
-            labels[f"A{j}"] = tuple(s.a)
-            labels[f"B{j}"] = tuple(s.b)
+            labels[f"A{j}"] = (s.a.body, s.a.point)
+            labels[f"B{j}"] = (s.b.body, s.b.point)
         return labels
 
 

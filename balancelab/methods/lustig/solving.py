@@ -48,7 +48,7 @@ class SolutionFamily:
     (0.0872, 0.1125)
     """
 
-    def __init__(self, unknowns: tuple, free: tuple, expressions: dict):
+    def __init__(self, unknowns: tuple, free: tuple, expressions: dict) -> None:
         self.unknowns = tuple(unknowns)
         self.free = tuple(free)
         self.expressions = dict(expressions)
@@ -364,7 +364,7 @@ def _candidate_solutions(n: int, topology: tuple, known: dict, unknowns: tuple) 
             else:
                 candidates.append({u: complex(sol[u].evalf(17)) for u in unknowns})
     if not candidates and (families or singular):
-        free = sorted({f for fam in families for f in fam.free}) or list(singular)
+        free = sorted({f for fam in families for f in fam.free}) or list(singular or ())
         raise SingularChoice(f"singular choice of unknowns: the balance conditions leave {free} free "
                              f"(a {len(free)}-parameter family of solutions, in the error's "
                              "`families` and from solve_family); choose fewer or other unknowns",
@@ -412,7 +412,7 @@ def _admissible_solution(checked: list, unknowns: tuple) -> dict:
         bad = {k: v for k, v in checked[0].items() if _is_positive_name(k) and v <= 0}
         raise InfeasibleDesign(f"the only solutions need non-positive {bad}: a negative stiffness, "
                                "mass or length cannot be built")
-    unique = []
+    unique: list[dict] = []
     for r in feasible:
         if not any(all(math.isclose(r[k], u[k], rel_tol=1e-9, abs_tol=1e-12) for k in r) for u in unique):
             unique.append(r)

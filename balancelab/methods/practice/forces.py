@@ -97,7 +97,7 @@ def _spring_basis(P, a: int, b: int) -> np.ndarray:
                      D[:, 0] * ca + D[:, 1] * sa, -D[:, 0] * sa + D[:, 1] * ca, np.cos(dl), np.sin(dl)])
 
 
-def _spring_coefficients(pa, pb) -> np.ndarray:
+def _spring_coefficients(pa, pb) -> tuple[np.ndarray, np.ndarray]:
     """Per-sample weights ``(N, 7)`` of :func:`_spring_basis` and the constant ``(N,)``."""
     ax, ay, bx, by = pa[:, 0], pa[:, 1], pb[:, 0], pb[:, 1]
     w = np.stack([np.ones_like(ax), 2 * bx, 2 * by, -2 * ax, -2 * ay, -2 * (ax * bx + ay * by),
@@ -203,8 +203,7 @@ def batch_generalized_force(design: Design, q, **values) -> np.ndarray:
         else:
             dS *= 0.5 * k
         Q += dS
-    Q = Q.reshape(N, m, dof)
-    return Q
+    return Q.reshape(N, m, dof)
 
 
 def _cable_of(design: Design, i: int) -> NoncircularProfile:
@@ -313,7 +312,7 @@ def joint_tree(design: Design) -> tuple:
                          f"torques) are computed for open chains only today, whose joints form a tree "
                          f"({nb - 1} joints for {nb} bodies); this design has {len(joints)} joints, a closed loop. "
                          "A loop of revolute joints is statically determinate, but not supported here yet")
-    parent = {0: None}
+    parent: dict[int, int | None] = {0: None}
     child_of = {}
     frontier = [0]
     while frontier:
@@ -355,9 +354,10 @@ def _cable_forces(design: Design, q, i: int, tension) -> list:
 def _external_forces(design: Design, q):
     """List of ``(body, world point (m, 2), force (m, 2))`` of every load and spring end."""
     out = []
-    P = design.world_points(q, [(ld.body, ld.point) for ld in design.loads]) if design.loads else None
-    for i, ld in enumerate(design.loads):
-        out.append((ld.body, P[:, i], np.broadcast_to(np.asarray(ld.force), P[:, i].shape)))
+    if design.loads:
+        P = design.world_points(q, [(ld.body, ld.point) for ld in design.loads])
+        for i, ld in enumerate(design.loads):
+            out.append((ld.body, P[:, i], np.broadcast_to(np.asarray(ld.force), P[:, i].shape)))
     if design.springs:
         T = spring_forces(design, q)
         w = design.world_points(q, [at for s in design.springs for at in (s.a, s.b)])

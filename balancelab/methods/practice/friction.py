@@ -31,7 +31,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import gravity_load
 from ...core.validation import body_index, finite_real, planar_point
-from . import forces
+from . import forces  # noqa: F401 (the doctests use the module by name)
 from .forces import configurations, generalized_force, joint_loads, joint_tree, pose_jacobian
 
 __all__ = ["joint_friction", "pin_friction", "holding_torques", "stays_put", "FrictionBand", "friction_band",

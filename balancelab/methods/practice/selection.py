@@ -52,8 +52,12 @@ __all__ = ["spring_family", "SpringChoice", "select_spring", "Selection", "sprin
            "largest_pulley_radius", "real_spring_lever"]
 
 
+_INDICES = np.arange(4.0, 14.01, 0.5)  # spring indices D/d of the default family
+_ACTIVE_COILS = np.arange(5, 401)
+
+
 def spring_family(material: Material = MUSIC_WIRE, wire_diameters=WIRE_DIAMETERS,
-                  indices=np.arange(4.0, 14.01, 0.5), active_coils=np.arange(5, 401), hooks: bool = True) -> dict:
+                  indices=_INDICES, active_coils=_ACTIVE_COILS, hooks: bool = True) -> dict:
     """Every combination of wire diameter, index and active coils, with its rate and limits.
 
     Returns
@@ -255,7 +259,7 @@ def _pulley_generalized_force(design: Design, q: np.ndarray, h: float = 1e-6) ->
 def _pulley_friction(design: Design, q: np.ndarray, fraction: float) -> np.ndarray:
     """Largest generalized force (m, dof) that pulleys losing ``fraction`` of the tension add."""
     band = np.zeros_like(q)
-    for i, s in enumerate(design.springs):
+    for _i, s in enumerate(design.springs):
         if s.pulley is not None and fraction > 0:
             alone = design.replace(springs=[s], loads=[])
             band += fraction * np.abs(_pulley_generalized_force(alone, q))

@@ -498,7 +498,7 @@ class ExtensionSpring:
     def governing(self, cycles: float | None = None) -> str:
         """Where the spring fails first: ``"body"``, ``"hook_torsion"`` or ``"hook_bending"``."""
         limits = self.max_forces(cycles)
-        return min(limits, key=limits.get)
+        return min(limits, key=lambda where: limits[where])
 
     def max_force(self, cycles: float | None = None) -> float:
         """Largest pull (N) within every allowable stress (body and hooks; static, or for ``cycles``)."""

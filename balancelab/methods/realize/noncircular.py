@@ -170,7 +170,7 @@ def _check_spring(spring_model, k, min_tension, max_tension, cycles) -> dict:
     if min_tension < spring_model.initial_tension:
         raise ProfileError(f"min_tension {min_tension:.4g} N is below the spring's initial tension "
                            f"{spring_model.initial_tension:.4g} N: the coils would close and the cable go slack")
-    part = min((p for p in limits if p != "max_force"), key=limits.get)
+    part = min((p for p in limits if p != "max_force"), key=lambda where: limits[where])
     if max_tension > limits["max_force"]:
         raise ProfileError(
             f"the spring is overstressed: its largest tension {max_tension:.4g} N exceeds what its "

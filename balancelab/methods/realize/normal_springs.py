@@ -30,7 +30,8 @@ of the linear solver.
 """
 from __future__ import annotations
 
-import math
+from typing import Any, Sequence
+
 
 import numpy as np
 
@@ -100,7 +101,7 @@ def _which(design: Design, springs) -> list[int]:
     return sorted(set(int(i) for i in chosen))
 
 
-def mount_normal_springs(design: Design, free_length: float, springs="all", *, margin: float = 0.1,
+def mount_normal_springs(design: Design, free_length: float, springs: str | Sequence[int] = "all", *, margin: float = 0.1,
                          n: int = 2000) -> Design:
     """Replace ZFL springs by ordinary springs of ``free_length`` mounted in pivoted sleeves.
 
@@ -176,7 +177,8 @@ def mount_normal_springs(design: Design, free_length: float, springs="all", *, m
                   + "normal springs in pivoted sleeves (balancelab.realize.mount_normal_springs)")
 
 
-def balance_normal(design: Design, springs=(), counterweights=(), free_length: float = 0.05, **options) -> Design:
+def balance_normal(design: Design, springs: Sequence[Any] = (), counterweights: Sequence[Any] = (),
+                   free_length: float = 0.05, **options: Any) -> Design:
     """Balance ``design`` exactly with *ordinary* springs of ``free_length`` mounted in sleeves.
 
     The mounted springs' energy equals the ZFL springs' (module docstring), so the balance

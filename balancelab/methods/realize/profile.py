@@ -98,7 +98,7 @@ class NoncircularProfile(CablePath):
     """
 
     def __init__(self, h, psi, angle_range, anchor, pivot, turn: int, cable_length: float,
-                 anchor_distance: float | None = None):
+                 anchor_distance: float | None = None) -> None:
         self.h = np.asarray(h, dtype=float)
         self.psi = np.asarray(psi, dtype=float)
         lo, hi = (float(v) for v in angle_range)

@@ -17,7 +17,7 @@ doubles ``n`` until the bound holds (:func:`balancelab.realize.export_profile`).
 """
 from __future__ import annotations
 
-import math
+import math  # noqa: F401 (the doctests use it)
 
 import numpy as np
 

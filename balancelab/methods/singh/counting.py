@@ -205,7 +205,7 @@ def _build(N: int) -> ChainConditions:
         star.append((Di / G, Ci / G))
     cs, ss = [c for c, _ in star], [s for _, s in star]
     zero = []
-    for body, (k, ax, ay, bx, by) in zip(bodies, springs):
+    for body, (_k, ax, ay, bx, by) in zip(bodies, springs):
         X, Y = point(body, ax, ay, cs, ss)
         zero += [X - bx, Y - by]
     balance = {t: c for t, c in _trig_normal_form(v_load + v_spring, C, S).items() if t != 1}
@@ -308,12 +308,12 @@ def chain_solution_point(N: int, seed: int = 0) -> dict:
     for i in range(N):
         values.update(dict(zip(cond.loads[3 * i:3 * i + 3], (Q(W[i]), Q(px[i]), Q(py[i])))))
     values.update(dict(zip(cond.loads[3 * N:], (Q(v) for v in ls))))
-    for s, body in enumerate(bodies):
-        c, si = [Q(d[0]) for d in dirs], [Q(d[1]) for d in dirs]
-        x, y = Q(a[s][0]), Q(a[s][1])
-        X = sum(Q(ls[j]) * c[j] for j in range(body - 1)) + x * c[body - 1] - y * si[body - 1]
-        Y = sum(Q(ls[j]) * si[j] for j in range(body - 1)) + x * si[body - 1] + y * c[body - 1]
-        values.update(dict(zip(cond.unknowns[5 * s:5 * s + 5], (Q(k[s]), x, y, X, Y))))
+    for j_s, body in enumerate(bodies):
+        cos_, si = [Q(d[0]) for d in dirs], [Q(d[1]) for d in dirs]
+        x, y = Q(a[j_s][0]), Q(a[j_s][1])
+        X = sum(Q(ls[j]) * cos_[j] for j in range(body - 1)) + x * cos_[body - 1] - y * si[body - 1]
+        Y = sum(Q(ls[j]) * si[j] for j in range(body - 1)) + x * si[body - 1] + y * cos_[body - 1]
+        values.update(dict(zip(cond.unknowns[5 * j_s:5 * j_s + 5], (Q(k[j_s]), x, y, X, Y))))
     return values
 
 

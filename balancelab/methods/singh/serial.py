@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
@@ -54,7 +52,7 @@ def _singh_design(name, W1, W2, p1, px2, l, ax, bx, by, ks, reference, parameter
                                   name=f"k{i + 1}"))
         springs_sym.append(springs[i])
     labels = {"O": (0, (0.0, 0.0)), "J": (1, (l, 0.0))}
-    for i, s in enumerate(springs_num):
+    for s in springs_num:
         n = s.name[1:]
         labels[f"a{n}"] = s.b
         labels[f"b{n}"] = s.a
