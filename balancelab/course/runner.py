@@ -103,12 +103,6 @@ def export_source(variables: list[str], nonce: str) -> str:
             "    _c = getattr(_s.modules.get('balancelab.course.check.core'), 'ATTEMPTS', None)\n"
             "    if type(_c) is dict:\n"
             "        _d['__attempts__'] = {str(k): v for k, v in _c.items() if type(v) is int}\n"
-            "    try:\n"
-            "        _o = __import__('os')\n"
-            "        _d['__fs__'] = {_p: 1 - _t.f_bavail / _t.f_blocks for _p in ('/tmp', '/dev/shm', '/home/student')\n"
-            "                        for _t in [_o.statvfs(_p)] if _t.f_blocks}\n"
-            "    except Exception:\n"
-            "        pass\n"
             f"    type(_s.stdout).write(_s.stdout, {nonce!r} + ' ' + _bl_ser(_d) + '\\n')\n"
             "try:\n"
             "    _bl_export(globals())\n"
@@ -281,19 +275,58 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
             notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
                          "the answers given before it are graded")
             break
+        _measure_folders(client.km, full)  # the runner's own reading, never the kernel's word
         found = _exported(probe, nonce)
         if found is not None:
-            fs = found.pop("__fs__", None)
-            for p, used in (fs.items() if isinstance(fs, dict) else []):
-                if isinstance(used, float) and used > full.get(p, 0.0):
-                    full[p] = used
             answers = found
     return answers, status
 
 
+def _descendants(pid: int) -> list[int]:
+    """``pid`` and every process below it, parents first (read from ``/proc``)."""
+    out, todo = [], [pid]
+    while todo and len(out) < 4096:
+        p = todo.pop(0)
+        out.append(p)
+        try:
+            tasks = os.listdir(f"/proc/{p}/task")
+        except OSError:
+            continue
+        for t in tasks:
+            try:
+                todo += [int(c) for c in Path(f"/proc/{p}/task/{t}/children").read_text().split()]
+            except (OSError, ValueError):
+                pass
+    return out
+
+
+def _measure_folders(km, full: dict) -> None:
+    """How full the sandbox's in-memory folders are, read by the runner from outside the kernel.
+
+    The runner looks at the folders through ``/proc/PID/root`` of the deepest process of the
+    kernel's tree (it sees the sandbox's mounts); the kernel's code cannot change this reading
+    (a note about a cap must not be the notebook's word). Nothing is recorded where ``/proc`` does
+    not let the runner look (then no folder note is given)."""
+    pid = getattr(getattr(km, "provisioner", None), "pid", None)
+    if not getattr(km, "sandboxed", False) or not isinstance(pid, int):
+        return
+    for p in reversed(_descendants(pid)):
+        try:
+            stats = {f: os.statvfs(f"/proc/{p}/root{f}") for f in ("/tmp", "/dev/shm", WORK)}
+        except OSError:
+            continue
+        if os.stat(f"/proc/{p}/root/").st_ino == os.stat("/").st_ino and os.stat(f"/proc/{p}/root/").st_dev \
+                == os.stat("/").st_dev:
+            return  # the host's own root (the sandbox's tree is gone): nothing of the sandbox to read
+        for f, st in stats.items():
+            if st.f_blocks:
+                full[f] = max(full.get(f, 0.0), 1 - st.f_bavail / st.f_blocks)
+        return
+
+
 def _cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
     """Add a row note (and a hit) for every cap the submission reached."""
-    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
+    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, WORK: caps.work}
     for p, used in sorted(full.items()):
         if used >= 0.98 and p in sizes:
             hits.append(p)
