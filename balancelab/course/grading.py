@@ -57,7 +57,7 @@ from .sanitize import excerpt
 from .check.core import student_key
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, lab_sources, read_regular, read_roster,
                      resolve_lab)
-from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, sandbox_available
+from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, precompile_package, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
@@ -400,6 +400,7 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
     clean_stale()
     Cgroup.clean_stale()
+    precompile_package()  # else every kernel compiles balancelab again
     writer = RowWriter(out) if out is not None else None
 
     def one(p):
