@@ -426,6 +426,22 @@ def test_lab_sources_are_compared():
                                                                      "--lab says lab1")
     assert resolve_lab(nb, Path("x.ipynb")) == ("lab5", "")
     assert resolve_lab({}, Path("x.ipynb")) == (None, "")
+    # the file name decides over the notebook's tag; an id holding "lab3" does not name the lab
+    assert resolve_lab(nb, Path("slab3_lab1.ipynb")) == ("lab1", "file name says lab1, metadata says lab5")
+    assert resolve_lab({}, Path("Ann_LAB2.ipynb"))[0] == "lab2"
+
+
+def test_ids_are_case_insensitive_everywhere():
+    """G18 item 2: file name, folder, roster and personal numbers agree on one normal form."""
+    from balancelab.course.check import task_numbers
+    from balancelab.course.intake import identity
+
+    assert identity("Alice_lab1.ipynb", None)[0] == identity("alice_lab1.ipynb", None)[0] == "alice"
+    assert identity("ALICE/lab1.ipynb", None)[0] == "alice"
+    assert identity("Alice/alice_lab1.ipynb", None) == ("alice", "file name")  # no "another id" note
+    assert identity("x_lab1.ipynb", {"x_lab1.ipynb": " S1001 "})[0] == "s1001"
+    for tid in ("1.1", "2.1", "3.1", "7.2"):
+        assert task_numbers(tid, "Alice") == task_numbers(tid, "alice") == task_numbers(tid, " ALICE ")
 
 
 def test_exported_data_is_checked_not_trusted():

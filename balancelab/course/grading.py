@@ -288,6 +288,7 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
         return GradeRow(student, "", "unknown lab", notes=_unknown_lab_note(nb, path, lab), mismatch=mismatch)
     sid, how = (student_key(student_id), id_source) if student_id is not None else identity(path.name, None)
     use = sandbox_available() if sandbox is None else sandbox
+    precompile_package()  # once per grader: else every kernel compiles balancelab again
     status, results, run_notes, extra = _run(data, lb, sid, cell_timeout, notebook_timeout, use, caps or Caps())
     notes = cheat_notes(nb) + ([] if use else ["NO SANDBOX (bubblewrap missing or turned off): the kernel ran with "
                                                "resource limits only"])
@@ -400,7 +401,6 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
     clean_stale()
     Cgroup.clean_stale()
-    precompile_package()  # else every kernel compiles balancelab again
     writer = RowWriter(out) if out is not None else None
 
     def one(p):

@@ -278,10 +278,14 @@ def lab_sources(nb: dict, path: Path, lab: str | None = None) -> tuple[str | Non
     >>> from pathlib import Path
     >>> lab_sources({"metadata": {"balancelab": {"lab": "Lab 07"}}}, Path("Ann_LAB2.ipynb"))
     ('lab2', 'lab7', None)
+    >>> lab_sources({}, Path("slab3_lab1.ipynb"))[0]
+    'lab1'
     """
     meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
     from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
-    m = re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE)
+    # the ``labN`` of ``ID_labN`` or ``labN...`` first: an id may itself hold "lab3" (``slab3_lab1``)
+    m = (re.search(r"(?:^|_)lab[_\-]?(\d+)", path.name, re.IGNORECASE)
+         or re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE))
     return (f"lab{int(m.group(1))}" if m else None), from_meta, _norm_lab(lab)
 
 

@@ -149,14 +149,15 @@ def kernel_binds() -> list[str]:
     return out + ["--ro-bind", pkg, pkg]
 
 
+@functools.lru_cache(maxsize=1)
 def precompile_package() -> bool:
     """Byte-compile the ``balancelab`` package folder once, before the kernels start.
 
     Every kernel imports ``balancelab`` from a read-only bind and may not write byte code
     (``PYTHONDONTWRITEBYTECODE``); a package without ``__pycache__`` (an editable install, a
     checkout run with ``PYTHONDONTWRITEBYTECODE`` set) is then compiled again by every kernel,
-    about a second of CPU per notebook. The grader compiles it here, as pip does for an
-    installed package; files already compiled are only checked.
+    about a second of CPU per notebook. The grader compiles it here, once per process, as pip
+    does for an installed package; files already compiled are only checked.
 
     Returns
     -------
