@@ -35,7 +35,7 @@ import sys
 import time
 from pathlib import Path
 
-from .caps import Caps, Cgroup
+from .caps import Caps, Cgroup, cap_notes, measure_folders
 from .check.data import encode_answer
 from .sanitize import excerpt
 from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
@@ -250,7 +250,7 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
         try:
             nb.cells[0] = cell
             client.execute_cell(cell, 0)
-            errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
+            errors += [f"cell {i} raised {excerpt(o.get('ename'), 40)}"
                        + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
                        for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
             cell.outputs = []
@@ -275,66 +275,12 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
             notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
                          "the answers given before it are graded")
             break
-        _measure_folders(client.km, full)  # the runner's own reading, never the kernel's word
+        if getattr(client.km, "sandboxed", False):  # the runner's own reading, never the kernel's word
+            measure_folders(getattr(client.km.provisioner, "pid", None), full)
         found = _exported(probe, nonce)
         if found is not None:
             answers = found
     return answers, status
-
-
-def _descendants(pid: int) -> list[int]:
-    """``pid`` and every process below it, parents first (read from ``/proc``)."""
-    out, todo = [], [pid]
-    while todo and len(out) < 4096:
-        p = todo.pop(0)
-        out.append(p)
-        try:
-            tasks = os.listdir(f"/proc/{p}/task")
-        except OSError:
-            continue
-        for t in tasks:
-            try:
-                todo += [int(c) for c in Path(f"/proc/{p}/task/{t}/children").read_text().split()]
-            except (OSError, ValueError):
-                pass
-    return out
-
-
-def _measure_folders(km, full: dict) -> None:
-    """How full the sandbox's in-memory folders are, read by the runner from outside the kernel.
-
-    The runner looks at the folders through ``/proc/PID/root`` of the deepest process of the
-    kernel's tree (it sees the sandbox's mounts); the kernel's code cannot change this reading
-    (a note about a cap must not be the notebook's word). Nothing is recorded where ``/proc`` does
-    not let the runner look (then no folder note is given)."""
-    pid = getattr(getattr(km, "provisioner", None), "pid", None)
-    if not getattr(km, "sandboxed", False) or not isinstance(pid, int):
-        return
-    for p in reversed(_descendants(pid)):
-        try:
-            stats = {f: os.statvfs(f"/proc/{p}/root{f}") for f in ("/tmp", "/dev/shm", WORK)}
-        except OSError:
-            continue
-        if os.stat(f"/proc/{p}/root/").st_ino == os.stat("/").st_ino and os.stat(f"/proc/{p}/root/").st_dev \
-                == os.stat("/").st_dev:
-            return  # the host's own root (the sandbox's tree is gone): nothing of the sandbox to read
-        for f, st in stats.items():
-            if st.f_blocks:
-                full[f] = max(full.get(f, 0.0), 1 - st.f_bavail / st.f_blocks)
-        return
-
-
-def _cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
-    """Add a row note (and a hit) for every cap the submission reached."""
-    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, WORK: caps.work}
-    for p, used in sorted(full.items()):
-        if used >= 0.98 and p in sizes:
-            hits.append(p)
-            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
-    if "memory" in hits:
-        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
-    if "processes" in hits:
-        notes.append(f"the process cap ({caps.processes} at once) was reached")
 
 
 def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
@@ -406,7 +352,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         hits.append("output")
         notes.append(f"output cap: {client.dropped / 2 ** 20:.1f} MB of output beyond {caps.output / 2 ** 20:g} MB "
                      "were dropped")
-    _cap_notes(caps, full, hits, notes)
+    cap_notes(caps, full, hits, notes)
     return dict(status=status, answers=answers, attempts=attempts if isinstance(attempts, dict) else {},
                 errors=errors, notes=notes, peak=peak, hits=hits)
 
