@@ -18,11 +18,15 @@ before (each kernel compiled the pkg)  7.3 -> 8.5   5.8 s                (not me
 before, 6 notebooks                    15.2 -> 13.1 9.8 s                4.6 s
 package byte-compiled once             4.5 -> 6.4   4.6 s                (not measured)
 package byte-compiled once, 6 nbs      11.4 -> 15.4 14.0 s               5.2 s
+package byte-compiled once             11.8 -> 12.5 10.4 s               4.22 s
+before, again (same hour)              14.8 -> 12.7 11.0 s               4.58 s
 =====================================  ===========  ===================  =============
 
-CPU time is itself inflated at such loads (shared cores); the byte-compiled package saves about
-0.8 s of CPU per kernel (importing ``balancelab`` in the sandbox: 2.0 s without ``__pycache__``,
-1.2 s with it, at a load of 8).
+CPU time is itself inflated and noisy at such loads (shared cores: the 6-notebook pair came out
+the wrong way round); the 20-notebook pair measured back to back gives 0.36 s of CPU saved per
+notebook by the byte-compiled package, and 4.2 s of CPU per notebook, i.e. about 2.1 s per
+notebook on two idle cores (importing ``balancelab`` on the host: 2.0 s without
+``__pycache__``, 1.2 s with it, at a load of 8).
 """
 from __future__ import annotations
 
