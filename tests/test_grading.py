@@ -117,7 +117,7 @@ def test_csv_and_summary_from_rows(tmp_path):
     p = write_csv(rows, tmp_path / "g.csv")
     text = p.read_text()
     assert text.splitlines()[0] == ("student,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message,"
-                                    "seconds,peak_mb,attempts")
+                                    "seconds,peak_mb,reported_attempts")
     assert "x,lab2,graded,1,2,1,0," in text
     s = summary(rows)
     assert "1/2" in s and "y: malformed" in s
@@ -131,8 +131,8 @@ def test_missing_folder_is_a_clear_error(tmp_path):
 
 def test_check_attempts_are_reported_per_task(graded):
     _, rows, _, _ = graded
-    assert rows["hank_lab2"]["attempts"] == "2.1:3 2.3:1"  # an unknown task is not counted
-    assert rows["alice_lab2"]["attempts"] == ""
+    assert rows["hank_lab2"]["reported_attempts"] == "2.1:3 2.3:1"  # an unknown task is not counted
+    assert rows["alice_lab2"]["reported_attempts"] == ""
 
 
 def test_rows_record_wall_time_and_peak_memory(graded):

@@ -399,9 +399,10 @@ def test_invalid_json_wrong_lab_and_untouched_student_version(graded):
     rows = graded["rows"]
     junk = rows["junk_lab2"]
     assert junk["status"] == "malformed" and junk["lab"] == "lab2" and junk["max"] == LAB2_MAX
-    zed = rows["zed_lab1"]
-    assert zed["lab"] == "lab2" and zed["2.1"] == "1"
-    assert zed["mismatch"] == "file name says lab1, metadata says lab2" and "lab mismatch" in zed["notes"]
+    zed = rows["zed_lab1"]  # lab 2's metadata in a file named lab 1: the file name decides (issue 18, G18 item 3)
+    assert zed["lab"] == "lab1" and zed["max"] == str(int(sum(t.points for t in tasks(1)))) and zed["total"] == "0"
+    assert zed["mismatch"] == "file name says lab1, metadata says lab2"
+    assert "the notebook's metadata says lab2 but the file name says lab1: graded as lab1" in zed["notes"]
     untouched = rows["untouched_lab2"]
     assert untouched["lab"] == "lab2" and untouched["total"] == "0" and untouched["max"] == LAB2_MAX
 
@@ -425,6 +426,22 @@ def test_lab_sources_are_compared():
                                                                      "--lab says lab1")
     assert resolve_lab(nb, Path("x.ipynb")) == ("lab5", "")
     assert resolve_lab({}, Path("x.ipynb")) == (None, "")
+    # the file name decides over the notebook's tag; an id holding "lab3" does not name the lab
+    assert resolve_lab(nb, Path("slab3_lab1.ipynb")) == ("lab1", "file name says lab1, metadata says lab5")
+    assert resolve_lab({}, Path("Ann_LAB2.ipynb"))[0] == "lab2"
+
+
+def test_ids_are_case_insensitive_everywhere():
+    """G18 item 2: file name, folder, roster and personal numbers agree on one normal form."""
+    from balancelab.course.check import task_numbers
+    from balancelab.course.intake import identity
+
+    assert identity("Alice_lab1.ipynb", None)[0] == identity("alice_lab1.ipynb", None)[0] == "alice"
+    assert identity("ALICE/lab1.ipynb", None)[0] == "alice"
+    assert identity("Alice/alice_lab1.ipynb", None) == ("alice", "file name")  # no "another id" note
+    assert identity("x_lab1.ipynb", {"x_lab1.ipynb": " S1001 "})[0] == "s1001"
+    for tid in ("1.1", "2.1", "3.1", "7.2"):
+        assert task_numbers(tid, "Alice") == task_numbers(tid, "alice") == task_numbers(tid, " ALICE ")
 
 
 def test_exported_data_is_checked_not_trusted():
@@ -723,7 +740,7 @@ def test_the_graders_working_folder_and_home_are_not_in_the_sandbox(graded):
 def test_attempt_keys_are_task_ids_and_counts_are_capped(graded):
     """Break 5: keys the student chose never reach the table; the table stays small."""
     row = graded["rows"]["attempts_lab2"]
-    assert row["2.1"] == "1" and row["attempts"] == "2.1:1000000", row["attempts"][:200]
+    assert row["2.1"] == "1" and row["reported_attempts"] == "2.1:1000000", row["reported_attempts"][:200]
     assert graded["size"] < 200_000
 
 
@@ -759,7 +776,8 @@ def test_merge_reads_huge_cells_and_keeps_only_task_attempts(tmp_path):
     (tmp_path / "b.csv").write_text(header + "bob,lab2,graded,0,1,0,,,no,1,1,2.1:2\n", encoding="utf-8")
     assert main(["merge", str(tmp_path / "a.csv"), str(tmp_path / "b.csv"), "--out", str(tmp_path / "all.csv")]) == 0
     rows = {r["student"]: r for r in csv.DictReader((tmp_path / "all.csv").open(encoding="utf-8"))}
-    assert rows["eve"]["attempts"] == "2.1:3" and rows["bob"]["attempts"] == "2.1:2"
+    # an older grader's column "attempts" is read; the merged table says whose count it is
+    assert rows["eve"]["reported_attempts"] == "2.1:3" and rows["bob"]["reported_attempts"] == "2.1:2"
     assert (tmp_path / "all.csv").stat().st_size < 10_000
 
 
@@ -1004,3 +1022,89 @@ def test_a_renamed_file_gets_no_published_answers_and_no_control_characters_reac
         if r["student"] != "carol_lab1":
             assert r["status"] == "unidentified" and r["1.1"] == "0", r
             assert "NO STUDENT ID" in r["notes"]
+
+
+#: Issue 18, G18 item 4: a cell hooks IPython's input transformers, so that every later cell the
+#: runner sends (its export probe included) is rewritten: the probe then prints a line of the
+#: notebook's choosing with the probe's own nonce: full in-memory folders, one check attempt.
+TRANSFORM_HOOK = """import re, subprocess, sys
+from balancelab.course.check import check
+for _ in range(40):
+    check("2.1", 1.0)
+def _forge(lines):
+    src = "".join(lines)
+    found = re.search(r"'([0-9a-f]{{32}})' \\+ ' '", src)
+    if not found:
+        return lines
+    line = found.group(1) + ' {{"k_lamp": {{"num": "%r"}}, "__attempts__": {{"2.1": 1}}, ' % k_lamp
+    line += '"__fs__": {{"/tmp": 1.0, "/dev/shm": 1.0, "/home/student": 1.0}}}}'
+    return ["import sys as _x\\n", "type(_x.stdout).write(_x.stdout, %r + chr(10))\\n" % line]
+get_ipython().input_transformers_post.append(_forge)
+subprocess.Popen([sys.executable, "-c", "import time; time.sleep(600)", {mark!r}], start_new_session=True)"""
+
+
+def test_ids_lab_tags_and_transformer_hooks(tmp_path):
+    """G18, items 2-4, each an end-to-end graded notebook, then the host checked.
+
+    * ids are case-insensitive: ``Alice_lab1`` and ``alice_lab1`` are one student (a duplicate),
+      a ``STUDENT_ID`` differing only in case is the same id, and personal numbers drawn for
+      ``"Carol"`` in the notebook are those the grader judges ``CAROL_lab1`` with;
+    * the file name decides the lab; a metadata tag that disagrees (or names no lab) is a note
+      that says so, never a false "cannot tell which lab";
+    * a notebook that hooks IPython's input transformers to rewrite the runner's export gets no
+      note about a cap it did not hit (the runner measures the folders itself), and the attempt
+      count it forged is in the column of what the notebook reported.
+    """
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    sub, scratch = tmp_path / "sub", tmp_path / "scratch"
+    sub.mkdir()
+    scratch.mkdir()
+    notebooks = {
+        "Alice_lab1": submission_notebook("lab1", personal_r_c("alice")),
+        "alice_lab1": submission_notebook("lab1", personal_r_c("ALICE")),
+        "Bob_lab1": submission_notebook("lab1", "STUDENT_ID = 'bob'\n" + personal_r_c("bob")),
+        "CAROL_lab1": submission_notebook("lab1", "from balancelab.course.check import set_student\n"
+                                          "STUDENT_ID = 'Carol'\nset_student(STUDENT_ID)\n"
+                                          + personal_r_c("Carol").replace(", 'Carol')", ")")),
+        "meta_lab1": submission_notebook("lab7", personal_r_c("meta")),
+        "bogus_lab1": submission_notebook("lab99", personal_r_c("bogus")),
+        "nameless": submission_notebook("lab99", personal_r_c("")),
+        "hook_lab2": submission_notebook("lab2", K_LAMP("hook"), TRANSFORM_HOOK.format(mark=MARK + "-g18")),
+    }
+    for name, nb in notebooks.items():
+        nbformat.write(nb, sub / f"{name}.ipynb")
+    out = tmp_path / "grades.csv"
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
+                           "--jobs", "2", "--cell-timeout", "30"], capture_output=True, text=True, timeout=900,
+                          cwd=ROOT, env={**os.environ, "BALANCELAB_SCRATCH": str(scratch)})
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    rows = {r["student"]: r for r in csv.DictReader(out.open(encoding="utf-8"))}
+    assert set(rows) == set(notebooks)
+    # item 2: one student, whatever the case
+    for name in ("Alice_lab1", "alice_lab1"):
+        assert rows[name]["1.1"] == "1", rows[name]["notes"]
+        assert "DUPLICATE ID 'alice'" in rows[name]["notes"], rows[name]["notes"]
+    assert rows["Bob_lab1"]["1.1"] == "1" and "declares" not in rows["Bob_lab1"]["notes"]
+    assert "DUPLICATE" not in rows["Bob_lab1"]["notes"]
+    assert rows["CAROL_lab1"]["1.1"] == "1" and "declares" not in rows["CAROL_lab1"]["notes"]
+    # item 3: the file name decides; the metadata's disagreement is said as it is
+    for name, tag in (("meta_lab1", "lab7"), ("bogus_lab1", "lab99")):
+        row = rows[name]
+        assert row["lab"] == "lab1" and row["status"] == "graded" and row["1.1"] == "1", (name, row["notes"])
+        assert f"the notebook's metadata says {tag} but the file name says lab1: graded as lab1" in row["notes"]
+        assert row["mismatch"] == f"file name says lab1, metadata says {tag}"
+    nameless = rows["nameless"]
+    assert nameless["status"] == "unknown lab"
+    assert "the notebook's metadata says lab99, which is no lab of this course" in nameless["notes"]
+    assert "no balancelab.lab metadata" not in nameless["notes"]
+    # item 4: the forged export changes the answer it carries, never what the grader measured
+    hook = rows["hook_lab2"]
+    assert hook["status"] == "graded" and hook["2.1"] == "1", hook["notes"]
+    assert "in-memory folder" not in hook["notes"] and "reached" not in hook["notes"], hook["notes"]
+    assert "input transformers" in hook["notes"]
+    assert hook["reported_attempts"] == "2.1:1"  # the notebook's word, in the column that says so
+    assert float(hook["seconds"]) > 0 and float(hook["peak_mb"]) > 0
+    # the host: no scratch folder, no process of a submission left
+    assert list(scratch.iterdir()) == []
+    assert _marked_processes() == []

@@ -14,7 +14,10 @@ Its caps (:class:`Caps`) are enforced with what the platform gives:
 * **file size** and **CPU time**: ``RLIMIT_FSIZE`` and ``RLIMIT_CPU`` of every process;
 * **output kept**: the runner keeps at most :attr:`Caps.output` bytes of a notebook's output.
 
-:class:`Cgroup` creates, joins, reads and removes the cgroup of one submission.
+:class:`Cgroup` creates, joins, reads and removes the cgroup of one submission;
+:func:`measure_folders` reads how full the in-memory folders are from outside the kernel, and
+:func:`cap_notes` turns every cap hit into a row note (a cap note is always the grader's own
+measurement, never the notebook's word).
 """
 from __future__ import annotations
 
@@ -25,7 +28,9 @@ import uuid
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Caps", "Cgroup", "probe", "LIMITER"]
+from .sandbox import WORK
+
+__all__ = ["Caps", "Cgroup", "probe", "LIMITER", "measure_folders", "cap_notes"]
 
 MB = 2 ** 20
 _ROOT = Path("/sys/fs/cgroup")
@@ -323,3 +328,90 @@ LIMITER = ("import os, resource, sys\n"
            "        except (ValueError, OSError):\n"
            "            pass\n"
            "os.execvp(sys.argv[5], sys.argv[5:])\n")
+
+
+def _descendants(pid: int) -> list[int]:
+    """``pid`` and every process below it, parents first (read from ``/proc``)."""
+    out, todo = [], [pid]
+    while todo and len(out) < 4096:
+        p = todo.pop(0)
+        out.append(p)
+        try:
+            tasks = os.listdir(f"/proc/{p}/task")
+        except OSError:
+            continue
+        for t in tasks:
+            try:
+                todo += [int(c) for c in Path(f"/proc/{p}/task/{t}/children").read_text().split()]
+            except (OSError, ValueError):
+                pass
+    return out
+
+
+def measure_folders(pid: int | None, full: dict) -> None:
+    """How full the sandbox's in-memory folders are, read from outside the kernel (into ``full``).
+
+    The runner looks at the folders through ``/proc/PID/root`` of the deepest process under the
+    sandbox's first process ``pid`` (it sees the sandbox's mounts); the kernel's code cannot
+    change this reading (a note about a cap must not be the notebook's word). Nothing is recorded
+    where ``/proc`` does not let the runner look (then no folder note is given).
+
+    Parameters
+    ----------
+    pid : int or None
+        The sandbox's first process (None: nothing is measured).
+    full : dict
+        Folder -> the largest used fraction seen so far; updated in place.
+
+    Examples
+    --------
+    >>> full = {}
+    >>> measure_folders(os.getpid(), full)  # no sandbox below this process: the host's root
+    >>> full
+    {}
+    """
+    if not isinstance(pid, int):
+        return
+    for p in reversed(_descendants(pid)):
+        try:
+            stats = {f: os.statvfs(f"/proc/{p}/root{f}") for f in ("/tmp", "/dev/shm", WORK)}
+        except OSError:
+            continue
+        if os.stat(f"/proc/{p}/root/").st_ino == os.stat("/").st_ino and os.stat(f"/proc/{p}/root/").st_dev \
+                == os.stat("/").st_dev:
+            return  # the host's own root (the sandbox's tree is gone): nothing of the sandbox to read
+        for f, st in stats.items():
+            if st.f_blocks:
+                full[f] = max(full.get(f, 0.0), 1 - st.f_bavail / st.f_blocks)
+        return
+
+
+def cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
+    """Add a row note (and a hit) for every cap the submission reached.
+
+    Parameters
+    ----------
+    caps : Caps
+    full : dict
+        Folder -> the largest used fraction :func:`measure_folders` saw.
+    hits : list
+        The caps hit (``"memory"``, ``"processes"``, ...); folders that reached their cap are added.
+    notes : list
+        The row's notes; one is added per cap hit.
+
+    Examples
+    --------
+    >>> hits, notes = ["processes"], []
+    >>> cap_notes(Caps(), {"/tmp": 0.99}, hits, notes)
+    >>> notes
+    ['the in-memory folder /tmp reached its cap (256 MB)', 'the process cap (64 at once) was reached']
+    """
+    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, WORK: caps.work}
+    for p, used in sorted(full.items()):
+        if used >= 0.98 and p in sizes:
+            hits.append(p)
+            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
+    if "memory" in hits:
+        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
+    if "processes" in hits:
+        notes.append(f"the process cap ({caps.processes} at once) was reached")

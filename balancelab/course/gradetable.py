@@ -80,7 +80,8 @@ class GradeRow:
     peak_mb : float or None
         Peak memory of the submission's processes (MB).
     attempts : dict
-        Task id -> number of ``check(...)`` calls the notebook made (as its kernel reported them).
+        Task id -> number of ``check(...)`` calls the notebook made, as its kernel reported them
+        (column ``reported_attempts``: the notebook's word, sanitized, never a measurement).
 
     Examples
     --------
@@ -117,7 +118,10 @@ def _task_columns(rows) -> list[str]:
     return [t for t in order if t in used] + extra
 
 
-_EXTRA = ["seconds", "peak_mb", "attempts"]
+#: The last columns. ``seconds`` and ``peak_mb`` are the grader's own measurements; the check counts
+#: are only what the notebook's kernel reported (it can reset or forge them), hence the column's name.
+ATTEMPTS_COLUMN = "reported_attempts"
+_EXTRA = ["seconds", "peak_mb", ATTEMPTS_COLUMN]
 
 
 def _header(cols: list[str]) -> list[str]:
@@ -149,7 +153,7 @@ def _record(r: GradeRow, cols: list[str]) -> list[str]:
 def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
     """Write the grade table: student, lab, status, total, max, a score column per task, notes,
     the lab mismatch, one verdict message column per task (``"2.1 message"``), then the wall time,
-    peak memory and check attempts. A cell that starts like a formula is escaped (:func:`cell`).
+    peak memory and the check attempts the notebook reported. A cell that starts like a formula is escaped (:func:`cell`).
 
     Parameters
     ----------
@@ -198,7 +202,7 @@ class RowWriter:
     '=cmd'
     >>> w.close()
     >>> p.read_text(encoding="utf-8").splitlines()[0]
-    'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,attempts'
+    'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,reported_attempts'
     """
 
     def __init__(self, path: str | Path) -> None:
@@ -253,7 +257,8 @@ def read_csv(path: str | Path) -> list[GradeRow]:
             scores = {k: float(rec[k]) for k in tids}
             rec = {k: _uncell(v or "")[:4000] for k, v in rec.items() if isinstance(k, str)}
             num = lambda x: float(x) if x else None  # noqa: E731
-            attempts = dict(a.split(":", 1) for a in rec.get("attempts", "").split() if ":" in a)
+            said = rec.get(ATTEMPTS_COLUMN, rec.get("attempts", ""))  # "attempts": a table of an older grader
+            attempts = dict(a.split(":", 1) for a in said.split() if ":" in a)
             attempts = _attempts({k: v for k, v in attempts.items() if v.isdigit()})
             rows.append(GradeRow(rec["student"], lab, rec["status"], scores, {k: points.get(k, 0.0) for k in tids},
                                  rec.get("notes", ""), {k: rec.get(f"{k} message", "") for k in tids},

@@ -55,9 +55,10 @@ from . import check as _check
 from .caps import Caps, Cgroup
 from .gradetable import GradeRow, RowWriter, merge_csv, read_csv, summary, write_csv
 from .sanitize import excerpt
-from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, read_regular, read_roster,
+from .check.core import student_key
+from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, lab_sources, read_regular, read_roster,
                      resolve_lab)
-from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, sandbox_available
+from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, precompile_package, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
@@ -205,6 +206,24 @@ def _run(path_data: bytes, lab: str, sid: str, cell_timeout: int, notebook_timeo
         remove_tree(scratch)
 
 
+def _unknown_lab_note(nb, path: Path, lab: str | None) -> str:
+    """Why no known lab was found, naming exactly what each source said."""
+    said = [f"{k} says {excerpt(v, 40)}" for k, v in zip(("the file name", "the notebook's metadata", "--lab"),
+                                                         lab_sources(nb, path, lab)) if v]
+    return ("cannot tell which lab this is (" + ("; ".join(said) + ", which is no lab of this course" if said else
+            "no 'labN' in the file name, no balancelab.lab metadata") + "); rename the file ID_labN.ipynb or pass --lab")
+
+
+def _lab_mismatch_note(nb, path: Path, lab: str | None, graded_as: str, mismatch: str) -> str:
+    """The row note of a lab that the sources disagree on: which source decided, what the others said."""
+    from_name, from_meta, forced = lab_sources(nb, path, lab)
+    decided = "--lab" if forced else "the file name" if from_name else "the notebook's metadata"
+    if from_meta and from_meta != graded_as and decided == "the file name":
+        return (f"lab mismatch: the notebook's metadata says {excerpt(from_meta, 40)} but the file name says "
+                f"{graded_as}: graded as {graded_as} (the file name decides, not the notebook)")
+    return f"lab mismatch ({excerpt(mismatch, 120)}): graded as {graded_as} ({decided} decides)"
+
+
 def _refused(student: str, why: str) -> GradeRow:
     return GradeRow(student, "", "refused", notes=f"not graded: {why}")
 
@@ -267,10 +286,10 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     if nb is None:
         return GradeRow(student, lb if lb in known else "", "malformed", zero, points, problem, mismatch=mismatch)
     if lb not in known:
-        return GradeRow(student, "", "unknown lab", notes="cannot tell which lab this is (no balancelab.lab "
-                        "metadata, no 'labN' in the file name); pass --lab", mismatch=mismatch)
-    sid, how = (student_id, id_source) if student_id is not None else identity(path.name, None)
+        return GradeRow(student, "", "unknown lab", notes=_unknown_lab_note(nb, path, lab), mismatch=mismatch)
+    sid, how = (student_key(student_id), id_source) if student_id is not None else identity(path.name, None)
     use = sandbox_available() if sandbox is None else sandbox
+    precompile_package()  # once per grader: else every kernel compiles balancelab again
     status, results, run_notes, extra = _run(data, lb, sid, cell_timeout, notebook_timeout, use, caps or Caps())
     notes = cheat_notes(nb) + ([] if use else ["NO SANDBOX (bubblewrap missing or turned off): the kernel ran with "
                                                "resource limits only"])
@@ -282,13 +301,13 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     elif "check whose" in how:  # the folder and the file name name different students
         notes.append(f"judged as {excerpt(repr(sid), 40)}: {how}")
     declared = extra.get("declared")
-    if declared and declared != sid:
+    if declared and student_key(declared) != sid:
         notes.append(f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)} but is "
                      f"{sid!r}'s ({how}): judged with {sid!r}'s numbers" if sid else
                      f"the notebook declares STUDENT_ID {excerpt(repr(declared), 40)}: ignored")
     notes += [excerpt(n, 300) for n in run_notes[:20]]
     if mismatch:
-        notes.insert(0, f"lab mismatch ({mismatch}): graded as {lb}")
+        notes.insert(0, _lab_mismatch_note(nb, path, lab, lb, mismatch))
     scores = {tid: float(results[tid]["score"]) if tid in results and (sid or tid not in personal) else 0.0
               for tid in points}
     scores = {tid: min(max(v, 0.0), points[tid]) if v == v else 0.0 for tid, v in scores.items()}
@@ -421,9 +440,9 @@ def _duplicate_ids(folder: Path, files: list, roster) -> dict:
     for p in files:
         rel = str(p.relative_to(folder))
         sid, _ = identity(rel, roster)
-        lab = re.search(r"lab(\d+)", p.name)
+        lab = lab_sources({}, p)[0] or ""
         if sid:
-            groups.setdefault((sid, lab.group(1) if lab else ""), []).append(rel)
+            groups.setdefault((sid, lab), []).append(rel)
     out = {}
     for (sid, _), rels in groups.items():
         if len(rels) > 1:

@@ -17,10 +17,11 @@ import re
 import stat
 from pathlib import Path
 
+from .check.core import student_key
 from .sanitize import excerpt
 
 __all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "read_roster", "identity",
-           "resolve_lab", "cheat_notes"]
+           "resolve_lab", "lab_sources", "cheat_notes"]
 
 #: Largest notebook file read (bytes).
 MAX_NOTEBOOK = 20 * 2 ** 20
@@ -171,6 +172,11 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     --------
     >>> identity("alice_lab2.ipynb", None)
     ('alice', 'file name')
+
+    Ids are case-insensitive (:func:`~balancelab.course.check.core.student_key`):
+
+    >>> identity("Alice_lab2.ipynb", None)[0] == identity("ALICE/lab2.ipynb", None)[0] == "alice"
+    True
     >>> identity("s1234/lab2.ipynb", None)
     ('s1234', 'folder name')
 
@@ -178,19 +184,23 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
 
     >>> identity("mallory/alice_lab1.ipynb", None)
     ('alice', "file name; the folder 'mallory' names another id: check whose it is")
-    >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "m77"})
+    >>> identity("malice_lab1.ipynb", {"malice_lab1.ipynb": "M77"})
     ('m77', 'roster')
     >>> identity("lab1.ipynb", None)[0]
     ''
     """
-    rel = rel.replace(os.sep, "/")
+    sid, how = _identity(rel.replace(os.sep, "/"), roster)
+    return student_key(sid), how
+
+
+def _identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
     if roster is not None:
         sid = roster.get(rel) or roster.get(rel.rsplit("/", 1)[-1])
         return (sid, "roster") if sid else ("", "not in the roster")
     parts = rel.split("/")
     m = ID_PATTERN.match(parts[-1])
     folder = parts[-2] if len(parts) >= 2 and _DIR_ID.match(parts[-2]) else None
-    if m and folder is not None and m.group("id") != folder:
+    if m and folder is not None and student_key(m.group("id")) != student_key(folder):
         # ID_labN.ipynb in a folder of another name: a folder that groups files, or someone's upload
         # folder holding a file named for a classmate; the file name's id is used, and the row says so
         return m.group("id"), (f"file name; the folder {excerpt(folder, 40)!r} names another id: "
@@ -212,8 +222,9 @@ def _norm_lab(lab) -> str | None:
 def resolve_lab(nb: dict, path: Path, lab: str | None = None) -> tuple[str | None, str]:
     """The lab of a notebook and what disagrees about it.
 
-    ``--lab`` wins, then the notebook's ``balancelab.lab`` metadata, then ``labN`` in the
-    file name; every source that names another lab is reported.
+    ``--lab`` wins, then ``labN`` in the file name (the instructor's name for the file, or the
+    roster's), and only then the notebook's ``balancelab.lab`` metadata, which the notebook's
+    author can edit; every source that names another lab is reported.
 
     Parameters
     ----------
@@ -233,19 +244,54 @@ def resolve_lab(nb: dict, path: Path, lab: str | None = None) -> tuple[str | Non
     --------
     >>> from pathlib import Path
     >>> resolve_lab({"metadata": {"balancelab": {"lab": "lab5"}}}, Path("ann_lab1.ipynb"))
-    ('lab5', 'file name says lab1, metadata says lab5')
+    ('lab1', 'file name says lab1, metadata says lab5')
+    >>> resolve_lab({"metadata": {"balancelab": {"lab": "lab5"}}}, Path("ann.ipynb"))
+    ('lab5', '')
     """
-    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
-    from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
-    m = re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE)
-    from_name = f"lab{int(m.group(1))}" if m else None
-    forced = _norm_lab(lab)
+    from_name, from_meta, forced = lab_sources(nb, path, lab)
     sources = [("file name", from_name), ("metadata", from_meta), ("--lab", forced)]
     named = {v for _, v in sources if v}
     mismatch = ", ".join(f"{k} says {v}" for k, v in sources if v) if len(named) > 1 else ""
-    return forced or from_meta or from_name, mismatch
+    return forced or from_name or from_meta, mismatch
 
 
+def lab_sources(nb: dict, path: Path, lab: str | None = None) -> tuple[str | None, str | None, str | None]:
+    """What the file name, the notebook's metadata and ``--lab`` each say the lab is (None: nothing).
+
+    Parameters
+    ----------
+    nb : dict
+        The notebook.
+    path : Path
+        Its file.
+    lab : str, optional
+        The lab forced on the command line.
+
+    Returns
+    -------
+    (str or None, str or None, str or None)
+        ``labN`` (or ``"unreadable (...)"`` for a tag that names no lab) from the file name,
+        the metadata and ``--lab``.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> lab_sources({"metadata": {"balancelab": {"lab": "Lab 07"}}}, Path("Ann_LAB2.ipynb"))
+    ('lab2', 'lab7', None)
+    >>> lab_sources({}, Path("slab3_lab1.ipynb"))[0]
+    'lab1'
+    """
+    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
+    from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
+    # the ``labN`` of ``ID_labN`` or ``labN...`` first: an id may itself hold "lab3" (``slab3_lab1``)
+    m = (re.search(r"(?:^|_)lab[_\-]?(\d+)", path.name, re.IGNORECASE)
+         or re.search(r"lab[_\-]?(\d+)", path.name, re.IGNORECASE))
+    return (f"lab{int(m.group(1))}" if m else None), from_meta, _norm_lab(lab)
+
+
+#: IPython's hooks on what a cell's source becomes (they see and rewrite every later cell the runner sends).
+_HOOK_NAMES = {"input_transformers_post", "input_transformers_cleanup", "input_transformer_manager", "transform_cell",
+               "ast_transformers", "register_transformer"}
 _PATCH_NAMES = {"check", "check_data", "grade_answers", "grade_namespace", "balance_report", "judge", "Verdict",
                 "print", "dumps"}
 
@@ -284,6 +330,10 @@ def cheat_notes(nb) -> list[str]:
                 name = t.id if isinstance(t, ast.Name) else t.attr if isinstance(t, ast.Attribute) else None
                 if name in _PATCH_NAMES:
                     found.add(f"replaces `{name}`")
+            hook = (node.attr if isinstance(node, ast.Attribute) else node.id if isinstance(node, ast.Name) else
+                    node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None)
+            if hook in _HOOK_NAMES:
+                found.add("hooks IPython's input transformers")
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and node.name in _PATCH_NAMES:
                 found.add(f"redefines `{node.name}`")
             if isinstance(node, ast.ClassDef) and any("Design" in ast.unparse(b) or "Verdict" in ast.unparse(b)

@@ -36,7 +36,7 @@ import time
 from typing import Any
 from pathlib import Path
 
-from .caps import Caps, Cgroup
+from .caps import Caps, Cgroup, cap_notes, measure_folders
 from .check.data import encode_answer
 from .sanitize import excerpt
 from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
@@ -104,12 +104,6 @@ def export_source(variables: list[str], nonce: str) -> str:
             "    _c = getattr(_s.modules.get('balancelab.course.check.core'), 'ATTEMPTS', None)\n"
             "    if type(_c) is dict:\n"
             "        _d['__attempts__'] = {str(k): v for k, v in _c.items() if type(v) is int}\n"
-            "    try:\n"
-            "        _o = __import__('os')\n"
-            "        _d['__fs__'] = {_p: 1 - _t.f_bavail / _t.f_blocks for _p in ('/tmp', '/dev/shm', '/home/student')\n"
-            "                        for _t in [_o.statvfs(_p)] if _t.f_blocks}\n"
-            "    except Exception:\n"
-            "        pass\n"
             f"    type(_s.stdout).write(_s.stdout, {nonce!r} + ' ' + _bl_ser(_d) + '\\n')\n"
             "try:\n"
             "    _bl_export(globals())\n"
@@ -259,7 +253,7 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
         try:
             nb.cells[0] = cell
             client.execute_cell(cell, 0)
-            errors += [f"cell {i}: {excerpt(o.get('ename'), 40)}"
+            errors += [f"cell {i} raised {excerpt(o.get('ename'), 40)}"
                        + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
                        for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
             cell.outputs = []
@@ -284,27 +278,12 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
             notes.append(f"the kernel stopped answering the runner in cell {i} ({type(e).__name__}): "
                          "the answers given before it are graded")
             break
+        if getattr(client.km, "sandboxed", False):  # the runner's own reading, never the kernel's word
+            measure_folders(getattr(client.km.provisioner, "pid", None), full)
         found = _exported(probe, nonce)
         if found is not None:
-            fs = found.pop("__fs__", None)
-            for p, used in (fs.items() if isinstance(fs, dict) else []):
-                if isinstance(used, float) and used > full.get(p, 0.0):
-                    full[p] = used
             answers = found
     return answers, status
-
-
-def _cap_notes(caps: Caps, full: dict, hits: list, notes: list) -> None:
-    """Add a row note (and a hit) for every cap the submission reached."""
-    sizes = {"/tmp": caps.tmp, "/dev/shm": caps.shm, "/home/student": caps.work}
-    for p, used in sorted(full.items()):
-        if used >= 0.98 and p in sizes:
-            hits.append(p)
-            notes.append(f"the in-memory folder {p} reached its cap ({sizes[p] // 2 ** 20} MB)")
-    if "memory" in hits:
-        notes.append(f"the memory cap of the notebook's processes ({caps.memory // 2 ** 20} MB) was reached")
-    if "processes" in hits:
-        notes.append(f"the process cap ({caps.processes} at once) was reached")
 
 
 def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
@@ -380,7 +359,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
         hits.append("output")
         notes.append(f"output cap: {client.dropped / 2 ** 20:.1f} MB of output beyond {caps.output / 2 ** 20:g} MB "
                      "were dropped")
-    _cap_notes(caps, full, hits, notes)
+    cap_notes(caps, full, hits, notes)
     return dict(status=status, answers=answers, attempts=attempts if isinstance(attempts, dict) else {},
                 errors=errors, notes=notes, peak=peak, hits=hits)
 

@@ -34,7 +34,7 @@ from pathlib import Path
 
 __all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited", "kernel_runs_as_nobody", "NOBODY",
            "assume_kernel_user",
-           "NO_SANDBOX_WARNING", "kernel_binds", "limited", "WORK", "SHARE"]
+           "NO_SANDBOX_WARNING", "kernel_binds", "limited", "precompile_package", "WORK", "SHARE"]
 
 NO_SANDBOX_WARNING = ("no sandbox: bubblewrap (bwrap) is missing, does not work here or was turned off, so "
                       "submissions run as the grader's user with resource limits only and can read and write the grader's files; install it "
@@ -147,6 +147,37 @@ def kernel_binds() -> list[str]:
             out += ["--ro-bind", root, root]
     pkg = str(Path(__file__).resolve().parents[1])  # the balancelab package folder
     return out + ["--ro-bind", pkg, pkg]
+
+
+@functools.lru_cache(maxsize=1)
+def precompile_package() -> bool:
+    """Byte-compile the ``balancelab`` package folder once, before the kernels start.
+
+    Every kernel imports ``balancelab`` from a read-only bind and may not write byte code
+    (``PYTHONDONTWRITEBYTECODE``); a package without ``__pycache__`` (an editable install, a
+    checkout run with ``PYTHONDONTWRITEBYTECODE`` set) is then compiled again by every kernel,
+    about a second of CPU per notebook. The grader compiles it here, once per process, as pip
+    does for an installed package; files already compiled are only checked.
+
+    Returns
+    -------
+    bool
+        True when the folder is compiled (False: it cannot be written, nothing changed).
+
+    Examples
+    --------
+    >>> precompile_package() in (True, False)
+    True
+    """
+    import compileall
+
+    pkg = Path(__file__).resolve().parents[1]
+    if not os.access(pkg, os.W_OK):
+        return False
+    try:
+        return bool(compileall.compile_dir(str(pkg), quiet=2, workers=1))
+    except OSError:
+        return False
 
 
 #: The sandbox's working folder and home (a tmpfs of its own).

@@ -14,7 +14,7 @@ from typing import Any, Callable
 from .data import Unreadable, decode_answer, encode_answer
 
 __all__ = ["Verdict", "AnswerError", "Task", "register_task", "tasks", "lab_tasks", "explain", "check", "check_data", "set_student",
-           "task_numbers"]
+           "task_numbers", "student_key"]
 
 
 @dataclass(frozen=True)
@@ -211,6 +211,32 @@ _STUDENT = {"id": ""}
 ATTEMPTS: dict[str, int] = {}
 
 
+def student_key(student_id: str) -> str:
+    """The one normal form of a student id: surrounding spaces dropped, letters in lower case.
+
+    Ids are case-insensitive everywhere: personal numbers are drawn for this form, and the
+    grader compares ids (file name, roster, the notebook's ``STUDENT_ID``) in this form, so
+    ``Alice_lab1.ipynb`` and ``alice_lab1.ipynb`` are the same student.
+
+    Parameters
+    ----------
+    student_id : str
+        An id as written anywhere (file name, roster, notebook).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> student_key("  Alice ") == student_key("alice") == "alice"
+    True
+    """
+    if not isinstance(student_id, str):
+        raise TypeError(f"student_id must be a string, got {type(student_id).__name__}")
+    return student_id.strip().lower()
+
+
 def set_student(student_id: str) -> None:
     """Set the student whose personal numbers :func:`task_numbers` and :func:`check` use.
 
@@ -228,7 +254,7 @@ def set_student(student_id: str) -> None:
     """
     if not isinstance(student_id, str):
         raise TypeError(f"student_id must be a string, got {type(student_id).__name__}")
-    _STUDENT["id"] = student_id.strip()
+    _STUDENT["id"] = student_key(student_id)
 
 
 def task_numbers(task_id: str, student: str | None = None) -> dict:
@@ -256,7 +282,7 @@ def task_numbers(task_id: str, student: str | None = None) -> dict:
     t = _TASKS.get(str(task_id))
     if t is None or t.numbers is None:
         return {}
-    student = _STUDENT["id"] if student is None else str(student).strip()
+    student = _STUDENT["id"] if student is None else student_key(str(student))
     return dict(_drawn(t.id, student))
 
 
