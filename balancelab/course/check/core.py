@@ -15,7 +15,7 @@ from .data import Unreadable, decode_answer, encode_answer
 from .derive import shortcuts
 
 __all__ = ["Verdict", "AnswerError", "Task", "SKILLS", "register_task", "tasks", "lab_tasks", "explain", "check", "check_data", "set_student",
-           "task_numbers"]
+           "task_numbers", "student_rng"]
 
 
 @dataclass(frozen=True)
@@ -277,18 +277,43 @@ def task_numbers(task_id: str, student: str | None = None) -> dict:
     return dict(_drawn(t.id, student))
 
 
-@functools.lru_cache(maxsize=4096)
-def _drawn(task_id: str, student: str) -> dict:
-    """A task's numbers for ``student`` (cached: a ``distinct`` draw may compute answers)."""
+def student_rng(key: str, student: str):
+    """The random generator of one student for one key: the seeding of every personal number.
+
+    Parameters
+    ----------
+    key : str
+        What the numbers are for: a task id (``"3.1"``) or, for an exam variant, its own key
+        (``"exam-lamp"``), so that no two keys share numbers.
+    student : str
+        The student id.
+
+    Returns
+    -------
+    numpy.random.Generator
+        Seeded by the SHA-256 of ``"balancelab:<key>:<student>"``: the same for the same pair,
+        on every machine.
+
+    Examples
+    --------
+    >>> float(student_rng("exam-lamp", "s1").uniform()) == float(student_rng("exam-lamp", "s1").uniform())
+    True
+    """
     import hashlib
 
     import numpy as np
 
+    seed = int.from_bytes(hashlib.sha256(f"balancelab:{key}:{student}".encode()).digest()[:8], "big")
+    return np.random.default_rng(seed)
+
+
+@functools.lru_cache(maxsize=4096)
+def _drawn(task_id: str, student: str) -> dict:
+    """A task's numbers for ``student`` (cached: a ``distinct`` draw may compute answers)."""
     t = _TASKS[task_id]
     if not student:
         return dict(t.numbers(None))
-    seed = int.from_bytes(hashlib.sha256(f"balancelab:{t.id}:{student}".encode()).digest()[:8], "big")
-    rng = np.random.default_rng(seed)
+    rng = student_rng(t.id, student)
     mine = dict(t.numbers(rng))
     if t.distinct is not None:
         value, rel = t.distinct
