@@ -354,3 +354,10 @@ def test_the_library_does_not_derive_formulas_from_symbols(call):
 
     with pytest.raises((TypeError, ValueError)):
         call(lambda name: sp.Symbol(name, positive=True))
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_at_least_half_of_every_labs_points_are_derive_or_design(lab):
+    ts = tasks(lab)
+    assert 2 * sum(t.points for t in ts if t.skill != "compute") >= sum(t.points for t in ts), lab
+    assert sum(t.points for t in ts if t.skill == "compute") <= sum(t.points for t in ts) / 2
