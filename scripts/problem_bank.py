@@ -106,8 +106,11 @@ def render(exercises: list[Exercise]) -> str:
     lines += [
         "",
         "For an exam, take one exercise of each kind from the chapters covered and change its",
-        "numbers; the solution's hidden check is the recipe for the new answer. The labs",
-        "({doc}`labs`) give every student their own numbers and grade them.",
+        "numbers; the solution's hidden check is the recipe for the new answer. For exam problems",
+        "with every student's own numbers, `scripts/problem_bank.py --variants ids.txt` (with `--out`)",
+        "writes one sheet per student id (`exam/handout/`, problems only) and an answer key with worked",
+        "solutions (`exam/key/`, for the instructor only), numbers seeded by the id as in the labs. The",
+        "labs ({doc}`labs`) give every student their own numbers and grade them.",
         "",
     ]
     return "\n".join(lines)
