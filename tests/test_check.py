@@ -72,6 +72,22 @@ def _pulley_radius(mass=2.0, length=0.5, b=0.3, c=0.2):
     return (lo + hi) / 2
 
 
+def _pulley_radius_by_ratio(mass, length, b, c):
+    """The same radius by fixed-point steps r <- r * 1 % / error(r): the error grows almost in proportion
+    to the radius, so a few steps converge (another route than the check's root finder, and faster
+    than bisection for the 200 levers of the classmate test)."""
+    from balancelab.methods.realize import pulley_balance_error, pulley_lever
+
+    radius = 0.2 * (b - c) * 0.05
+    for _ in range(30):
+        lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=radius)
+        ratio = pulley_balance_error(lever).residual_torque / (mass * bl.G * length) / 0.01
+        if abs(ratio - 1) < 1e-6:
+            break
+        radius = min(radius / ratio, 0.9 * (b - c))
+    return radius
+
+
 def _approximate_spring(**kw):
     from balancelab.methods.realize import approximate_lever
 
@@ -589,7 +605,7 @@ def _parallelogram_by_hand(n):
 PERSONAL_RIGHT = {
     "1.1": lambda n: (n["mass"] * n["length"] + n["link_mass"] * n["length"] / 2) / n["counter_mass"],
     "2.1": lambda n: n["mass"] * bl.G * n["length"] / (n["b"] * n["c"]),
-    "3.1": lambda n: _pulley_radius(**n),
+    "3.1": lambda n: _pulley_radius_by_ratio(**n),
     "3.2": lambda n: -n["k"] * n["free_length"] / n["k_partner"],
     "4.1": _parallelogram_by_hand,
     "4.2": _singh_2r_pe,
@@ -633,6 +649,7 @@ def test_few_classmates_answers_pass_each_others_check(tid):
     near = [(i, j) for i in ids for j in ids if i != j and abs(first[i] / first[j] - 1) <= 0.1]
     passing = sum(core.check_data(tid, enc(values[i]), j).correct for i, j in near)
     rate = passing / (len(ids) * (len(ids) - 1))
+    print(f"task {tid}: {100 * rate:.2f} % of classmate pairs pass each other's check")
     assert rate < 0.01, f"{tid}: {100 * rate:.2f} % of classmate pairs pass each other's check"
     published = enc(_as_answer(PERSONAL_RIGHT[tid](ck.task_numbers(tid, ""))))
     assert not any(core.check_data(tid, published, sid).correct for sid in ids)
