@@ -4,6 +4,13 @@ Usage::
 
     python scripts/problem_bank.py           # rewrite book/problem_bank.md
     python scripts/problem_bank.py --check   # exit 1 if the page is not what the chapters say
+    python scripts/problem_bank.py --variants ids.txt --out exam/   # exam variants, one per student
+
+``--variants`` reads student ids (one a line, as on the labs' roster) and writes
+``exam/handout/<id>.md`` (the problems with that student's numbers, no solutions) and
+``exam/key/<id>.md`` (the same problems with worked solutions and answers, for the instructor
+only). The numbers come from the labs' seeding (:func:`balancelab.course.check.core.student_rng`)
+under keys of their own (``exam-...``), so an exam variant never repeats a student's lab numbers.
 
 Every exercise of a chapter sits under its "Exercises" heading as a ``{exercise}`` directive whose
 body starts with a line naming its kind and level, for example ``*Derive, level 2 of 3.*``:
@@ -99,8 +106,11 @@ def render(exercises: list[Exercise]) -> str:
     lines += [
         "",
         "For an exam, take one exercise of each kind from the chapters covered and change its",
-        "numbers; the solution's hidden check is the recipe for the new answer. The labs",
-        "({doc}`labs`) give every student their own numbers and grade them.",
+        "numbers; the solution's hidden check is the recipe for the new answer. For exam problems",
+        "with every student's own numbers, `scripts/problem_bank.py --variants ids.txt` (with `--out`)",
+        "writes one sheet per student id (`exam/handout/`, problems only) and an answer key with worked",
+        "solutions (`exam/key/`, for the instructor only), numbers seeded by the id as in the labs. The",
+        "labs ({doc}`labs`) give every student their own numbers and grade them.",
         "",
     ]
     return "\n".join(lines)
@@ -110,7 +120,16 @@ def main(argv: list[str] | None = None) -> int:
     """Write the page, or with ``--check`` report whether it is current (exit status 1 if not)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true", help="only check that the page is current")
+    parser.add_argument("--variants", help="file of student ids (one a line): write exam variants")
+    parser.add_argument("--out", default="exam", help="folder for --variants (handout/ and key/)")
     args = parser.parse_args(argv)
+    if args.variants:
+        from exam_variants import write_variants
+
+        ids = [ln.strip() for ln in Path(args.variants).read_text().splitlines() if ln.strip()]
+        handout, key = write_variants(ids, Path(args.out))
+        print(f"wrote {len(ids)} variants: {handout} (for students), {key} (for you: worked solutions)")
+        return 0
     exercises = all_exercises()
     untagged = [e.label for e in exercises if not e.kind]
     if untagged:

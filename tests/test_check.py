@@ -63,13 +63,29 @@ def _pulley_radius(mass=2.0, length=0.5, b=0.3, c=0.2):
     """Bisection on the exact pulley model (a route independent of the check's root finder)."""
     from balancelab.methods.realize import pulley_balance_error, pulley_lever
 
-    lo, hi = 1e-5, 0.05
+    lo, hi = 1e-5, min(0.05, 0.9 * (b - c))  # the pulley stays above the attachment
     for _ in range(40):
         mid = (lo + hi) / 2
         lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=mid)
         err = pulley_balance_error(lever).residual_torque / (mass * bl.G * length)
         lo, hi = (mid, hi) if err < 0.01 else (lo, mid)
     return (lo + hi) / 2
+
+
+def _pulley_radius_by_ratio(mass, length, b, c):
+    """The same radius by fixed-point steps r <- r * 1 % / error(r): the error grows almost in proportion
+    to the radius, so a few steps converge (another route than the check's root finder, and faster
+    than bisection for the 200 levers of the classmate test)."""
+    from balancelab.methods.realize import pulley_balance_error, pulley_lever
+
+    radius = 0.2 * (b - c) * 0.05
+    for _ in range(30):
+        lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=radius)
+        ratio = pulley_balance_error(lever).residual_torque / (mass * bl.G * length) / 0.01
+        if abs(ratio - 1) < 1e-6:
+            break
+        radius = min(radius / ratio, 0.9 * (b - c))
+    return radius
 
 
 def _approximate_spring(**kw):
@@ -167,6 +183,8 @@ RIGHT = {
     "4.2": lambda: float(np.hypot(10.0 * 1.0 + 20.0 * 1.5, 10.0 * 0.5) + 20.0 * 2.0),
     "4.3": lambda: {"a_x": (1.4, 1.5, -1.5)},
     "4.4": lambda: bl.lustig.lustig_table3e_case(1).parameters["k1"],
+    # the 2R's largest load energy: amplitude of link 1's sinusoid plus link 2's, by hand
+    "4.5": lambda: sp.sympify("sqrt(W_1**2*p_x1**2 + 2*W_1*W_2*l*p_x1 + W_2**2*l**2 + W_1**2*p_y1**2) + W_2*p_x2"),
     "5.1": _crank_rate,
     "5.2": lambda: float(np.hypot(40.0, 5.0) + 40.0 + 10.0 * 0.5),
     "5.3": lambda: {"base": "A", "h": 0.15},
@@ -181,6 +199,7 @@ RIGHT = {
     "8.1": lab8_reference_springs,
     "8.2": _lab8_study,
     "8.3": _lab8_shoulder_torque,
+    "8.4": lambda: sp.sympify("-epsilon*g*cos(theta_1)*(m_1*p_1 + m_2*l_1)"),
     "9.1": _lab9_pulley,
     "9.2": _lab9_largest_tension,
     "9.3": lambda: sp.sympify("-m*g*r*cos(theta)/sqrt(2*k*C - 2*k*m*g*r*sin(theta))"),
@@ -580,3 +599,83 @@ def test_every_check_path_is_counted_once():
     ck.check("no such task", 1.0)
     assert core.ATTEMPTS.get("2.1", 0) - before.get("2.1", 0) == 3
     assert "no such task" not in core.ATTEMPTS
+
+
+# ------------------------------------------------------- personal numbers: classmates' answers
+
+def _singh_2r_pe(n):
+    # Singh eq. 49 by hand: |W1 p1 + W2 l| (the base pivot's share, a vector) + W2 |p2|
+    (w1, w2), ((p1x, p1y), (p2x, p2y)), l = n["weights"], n["coms"], n["length"]
+    return float(np.hypot(w1 * p1x + w2 * l, w1 * p1y) + w2 * np.hypot(p2x, p2y))
+
+
+def _singh_fourbar_pe(n):
+    # the relaxed 2R (crank 1.5 m, coupler's com at 2 m) plus the rocker's weight at its com 0.5 m
+    w1, w2, w3 = n["weights"]
+    return float(np.hypot(w1 * 1.0 + w2 * 1.5, w1 * 0.5) + w2 * 2.0 + w3 * 0.5)
+
+
+def _lecture_crank_rate(n):
+    (m2, m3, _), ((p2, _y), (p3x, p3y), _r) = n["masses"], n["coms"]
+    c = complex(p3x, p3y) / 0.8
+    return bl.G * abs(m2 * p2 + m3 * (1 - c) * 0.3) / (0.2 * 0.15)
+
+
+def _parallelogram_by_hand(n):
+    (m1, m2), ((p1, _), (p2, _)), l = n["masses"], n["coms"], n["length"]
+    (b1, b2), (c1, c2) = n["b"], n["c"]
+    return (bl.G * (m1 * p1 + m2 * l) / (b1 * c1), bl.G * m2 * p2 / (b2 * c2))
+
+
+#: each personal numeric task's right answer from its numbers, by a route independent of its judge
+PERSONAL_RIGHT = {
+    "1.1": lambda n: (n["mass"] * n["length"] + n["link_mass"] * n["length"] / 2) / n["counter_mass"],
+    "2.1": lambda n: n["mass"] * bl.G * n["length"] / (n["b"] * n["c"]),
+    "3.1": lambda n: _pulley_radius_by_ratio(**n),
+    "3.2": lambda n: -n["k"] * n["free_length"] / n["k_partner"],
+    "4.1": _parallelogram_by_hand,
+    "4.2": _singh_2r_pe,
+    "5.1": _lecture_crank_rate,
+    "5.2": _singh_fourbar_pe,
+    "7.2": lambda n: _lab7_least_stiffness(n),
+    # the spring's extra pull e k1 b1 c1 cos(theta_1), with k1 b1 c1 = g (m1 p1 + m2 l1)
+    "8.3": lambda n: n["rate_error"] * bl.G * (1.0 * 0.25 + 1.0 * 0.5) * math.cos(n["theta_1"]),
+}
+
+
+def test_every_personal_numeric_task_has_an_independent_right_answer():
+    personal = {t.id for t in tasks() if t.numbers is not None and t.kind == "numeric"}
+    assert personal == set(PERSONAL_RIGHT)
+    for tid, right in PERSONAL_RIGHT.items():
+        assert check(tid, right(ck.task_numbers(tid, ""))).correct, tid  # published numbers
+        for sid in ("s1", "alice", "s199"):
+            assert core.check_data(tid, ck.data.encode_answer(right(ck.task_numbers(tid, sid))), sid).correct, (tid, sid)
+
+
+def _as_answer(value):
+    return tuple(float(v) for v in value) if isinstance(value, tuple) else float(value)
+
+
+@pytest.mark.parametrize("tid", sorted(PERSONAL_RIGHT))
+def test_few_classmates_answers_pass_each_others_check(tid):
+    """Issue 21, item 3: over 200 ids, under 1 % of ordered pairs (i, j) have i's right answer pass
+    j's check, and the published answer passes nobody's.
+
+    The check is run on every pair whose (first) values are within 10 % of each other; every
+    student's check is shown to refuse their own answer 10 % off either way, so the pairs farther
+    apart cannot pass (the relative tolerance is a band around the right value)."""
+    ids = [f"s{i:03d}" for i in range(200)]
+    values = {sid: _as_answer(PERSONAL_RIGHT[tid](ck.task_numbers(tid, sid))) for sid in ids}
+    first = {sid: (v[0] if isinstance(v, tuple) else v) for sid, v in values.items()}
+    enc = ck.data.encode_answer
+    for sid in ids:
+        assert core.check_data(tid, enc(values[sid]), sid).correct
+        for f in (0.9, 1.1):
+            assert not core.check_data(tid, enc(_scaled(values[sid], f)), sid).correct
+    near = [(i, j) for i in ids for j in ids if i != j and abs(first[i] / first[j] - 1) <= 0.1]
+    passing = sum(core.check_data(tid, enc(values[i]), j).correct for i, j in near)
+    rate = passing / (len(ids) * (len(ids) - 1))
+    print(f"task {tid}: {100 * rate:.2f} % of classmate pairs pass each other's check")
+    assert rate < 0.01, f"{tid}: {100 * rate:.2f} % of classmate pairs pass each other's check"
+    published = enc(_as_answer(PERSONAL_RIGHT[tid](ck.task_numbers(tid, ""))))
+    assert not any(core.check_data(tid, published, sid).correct for sid in ids)

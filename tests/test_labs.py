@@ -274,3 +274,90 @@ def test_default_explorers_do_not_show_answers(lab, task):
     design = fn()
     shown = [v for v in design.parameters.values() if isinstance(v, (int, float))]
     assert not any(check(task, float(v)).correct for v in shown)
+
+
+# ------------------------------------------------------- kinds of work, and derive tasks' shortcuts
+
+
+def test_every_task_is_labelled_compute_derive_or_design_in_its_heading():
+    """Issue 21, item 1: each task carries its kind of work, and the notebook's heading says the same."""
+    from balancelab.course.check.core import SKILLS
+
+    for lab in LABS:
+        src = "\n".join(c.source for c in _read(_lab_file(lab)).cells if c.cell_type == "markdown")
+        for t in tasks(lab):
+            assert t.skill in SKILLS, t.id
+            assert t.kind != "symbolic" or t.skill == "derive", t.id
+            assert re.search(rf"^## Task {re.escape(t.id)} \({t.skill}[,)]", src, re.M), (t.id, t.skill)
+
+
+def _run_cell(source):
+    """Run ``source`` as one cell of a real IPython shell (history stored, as in a notebook)."""
+    from IPython.core.interactiveshell import InteractiveShell
+
+    shell = InteractiveShell.instance()
+    result = shell.run_cell(source, store_history=True)
+    assert result.error_in_exec is None, result.error_in_exec
+    return shell.user_ns
+
+
+#: For each derive task, what a student who reads the docstrings tries: the library call that
+#: computes the answer (for the published numbers, or fed the task's symbols), in the graded cell.
+SHORTCUT_CELLS = {
+    "1.2": ['import balancelab as bl\nfrom balancelab.course.check import check\n'
+            'r_c_formula = bl.lecture.single_link_counterweight(mass=1.2, length=0.45, counter_mass=3.0, '
+            'link_mass=0.6).parameters["r_c"]\nverdict = check("1.2", r_c_formula)'],
+    "2.2": ['import sympy as sp\nimport balancelab as bl\nfrom balancelab.course.check import check\n'
+            'd = bl.singh.generalized_lever(weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)\n'
+            'eqs = [e.lhs for e in d.balance_conditions()]\n'
+            'syms = {str(s): s for e in eqs for s in e.free_symbols}\n'
+            'sol = sp.solve(eqs, [syms["a_y"], syms["k"]], dict=True)\n'
+            'sol = [s for s in sol if s[syms["k"]] != 0][0]\n'
+            'lever_conditions = (sol[syms["a_y"]], sol[syms["k"]])\nverdict = check("2.2", lever_conditions)'],
+    "4.5": ['from balancelab.methods.singh import serial_2r_min_preload\nfrom balancelab.course.check import check\n'
+            'pe_min_formula = serial_2r_min_preload().parameters["PE_min"]\nverdict = check("4.5", pe_min_formula)'],
+    "8.4": ['import numpy as np\nfrom balancelab.course.check import check, lab8\n'
+            'from balancelab.methods.practice import forces\n'
+            'torque_formula = float(forces.generalized_force(lab8.rate_error_arm(0.02), np.array([[0.0, 0.0]]))[1][0, 0])\n'
+            'verdict = check("8.4", torque_formula)'],
+}
+
+
+@pytest.mark.parametrize("tid", [t.id for t in tasks() if t.skill == "derive"])
+def test_derive_tasks_refuse_the_obvious_library_call(tid):
+    """Issue 21, item 2: the library call that gives a derive task's answer, made in the graded cell,
+    is refused by the notebook's check (which names it); its value, as the grader reads it, scores 0."""
+    from balancelab.course.check import core, data
+
+    assert tid in SHORTCUT_CELLS, f"no shortcut tried for derive task {tid}"
+    for cell in SHORTCUT_CELLS[tid]:
+        ns = _run_cell(cell)
+        verdict = ns["verdict"]
+        assert not verdict.correct and verdict.score == 0, str(verdict)
+        assert "derived by hand" in verdict.message and "calls" in verdict.message
+        answer = ns[{t.id: t for t in tasks()}[tid].variable]
+        if not isinstance(answer, tuple):  # a number where a formula is asked: the grader's judge refuses it
+            assert not core.check_data(tid, data.encode_answer(answer)).correct
+
+
+@pytest.mark.parametrize("call", [
+    lambda s: __import__("balancelab").lecture.single_link_counterweight(
+        mass=s("m"), length=s("r"), counter_mass=s("m_c"), link_mass=s("m_l")).parameters["r_c"],
+    lambda s: __import__("balancelab").methods.singh.serial_2r_min_preload(
+        weights=(s("W_1"), s("W_2")), coms=((s("p_x1"), s("p_y1")), (s("p_x2"), 0.0)), length=s("l")).parameters["PE_min"],
+    lambda s: __import__("balancelab").course.check.lab8.rate_error_arm(s("epsilon")),
+])
+def test_the_library_does_not_derive_formulas_from_symbols(call):
+    """The solvers a derive task disallows take numbers only: fed the task's sympy symbols, they refuse
+    (so the formula cannot be had from them in any cell)."""
+    import sympy as sp
+
+    with pytest.raises((TypeError, ValueError)):
+        call(lambda name: sp.Symbol(name, positive=True))
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_at_least_half_of_every_labs_points_are_derive_or_design(lab):
+    ts = tasks(lab)
+    assert 2 * sum(t.points for t in ts if t.skill != "compute") >= sum(t.points for t in ts), lab
+    assert sum(t.points for t in ts if t.skill == "compute") <= sum(t.points for t in ts) / 2

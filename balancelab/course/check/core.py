@@ -12,9 +12,10 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from .data import Unreadable, decode_answer, encode_answer
+from .derive import shortcuts
 
-__all__ = ["Verdict", "AnswerError", "Task", "register_task", "tasks", "lab_tasks", "explain", "check", "check_data", "set_student",
-           "task_numbers", "student_key"]
+__all__ = ["Verdict", "AnswerError", "Task", "SKILLS", "register_task", "tasks", "lab_tasks", "explain", "check", "check_data", "set_student",
+           "task_numbers", "student_key", "student_rng"]
 
 
 @dataclass(frozen=True)
@@ -101,7 +102,7 @@ class Task:
     variable : str
         Name of the notebook variable holding the answer (what the grader reads).
     kind : str
-        ``"numeric"``, ``"symbolic"`` or ``"design"``.
+        The answer's form: ``"numeric"``, ``"symbolic"`` or ``"design"``.
     expects : str
         What an answer looks like, with units and tolerance.
     judge : callable
@@ -112,6 +113,12 @@ class Task:
         For a task with personal numbers: ``numbers(rng)`` draws a student's numbers (a dict)
         from a seeded generator, ``numbers(None)`` gives the published ones; the judge is
         then called as ``judge(answer, numbers)``.
+    skill : str
+        The work the task asks for (:data:`SKILLS`): ``"compute"`` (a number the chapter's relations
+        or the library give), ``"derive"`` (reasoning no single library call gives: a symbolic
+        result, a prediction, a sign with its reason) or ``"design"`` (choose free parameters
+        under constraints; many right answers). By default ``"derive"`` for a symbolic answer,
+        ``"design"`` for a design and ``"compute"`` for a number.
     distinct : (callable, float), optional
         ``(value, rel)``: a student's numbers are drawn again (up to 50 times) until ``value(numbers)``
         differs from ``value`` of the published numbers by more than ``rel`` (relative), so that the
@@ -120,8 +127,8 @@ class Task:
     Examples
     --------
     >>> t = tasks("lab2")[0]
-    >>> t.id, t.variable, t.kind
-    ('2.1', 'k_lamp', 'numeric')
+    >>> t.id, t.variable, t.kind, t.skill
+    ('2.1', 'k_lamp', 'numeric', 'compute')
     """
 
     id: str
@@ -134,13 +141,19 @@ class Task:
     points: float = 1.0
     numbers: Callable | None = field(default=None, repr=False, compare=False)
     distinct: tuple | None = field(default=None, repr=False, compare=False)
+    skill: str = "compute"
 
+
+#: The kinds of work a task asks for (:attr:`Task.skill`).
+SKILLS = ("compute", "derive", "design")
+_DEFAULT_SKILL = {"numeric": "compute", "symbolic": "derive", "design": "design"}
 
 _TASKS: dict[str, Task] = {}
 
 
 def register_task(id: str, title: str, variable: str, kind: str, expects: str,
-                  points: float = 1.0, numbers: Callable | None = None, distinct: tuple | None = None) -> Callable:
+                  points: float = 1.0, numbers: Callable | None = None, distinct: tuple | None = None,
+                  skill: str | None = None) -> Callable:
     """Decorator declaring a task: the decorated function is its judge.
 
     A judge takes the student's answer and returns ``(correct, message, hint)`` (the
@@ -150,8 +163,8 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
     ----------
     id : str
         ``"<lab>.<n>"``, e.g. ``"2.4"``; registering an id again replaces the task.
-    title, variable, kind, expects, points, numbers, distinct
-        As in :class:`Task`.
+    title, variable, kind, expects, points, numbers, distinct, skill
+        As in :class:`Task` (``skill`` follows from ``kind`` when omitted).
 
     Returns
     -------
@@ -169,9 +182,13 @@ def register_task(id: str, title: str, variable: str, kind: str, expects: str,
     """
     if kind not in ("numeric", "symbolic", "design"):
         raise ValueError(f"kind must be 'numeric', 'symbolic' or 'design', got {kind!r}")
+    skill = _DEFAULT_SKILL[kind] if skill is None else skill
+    if skill not in SKILLS:
+        raise ValueError(f"skill must be one of {', '.join(map(repr, SKILLS))}, got {skill!r}")
 
     def register(fn):
-        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points, numbers, distinct)
+        _TASKS[id] = Task(id, "lab" + id.split(".")[0], title, variable, kind, expects, fn, points, numbers, distinct,
+                          skill)
         return fn
 
     return register
@@ -286,21 +303,46 @@ def task_numbers(task_id: str, student: str | None = None) -> dict:
     return dict(_drawn(t.id, student))
 
 
-@functools.lru_cache(maxsize=256)
-def _drawn(task_id: str, student: str) -> dict:
-    """A task's numbers for ``student`` (cached: a ``distinct`` draw may compute answers)."""
+def student_rng(key: str, student: str):
+    """The random generator of one student for one key: the seeding of every personal number.
+
+    Parameters
+    ----------
+    key : str
+        What the numbers are for: a task id (``"3.1"``) or, for an exam variant, its own key
+        (``"exam-lamp"``), so that no two keys share numbers.
+    student : str
+        The student id.
+
+    Returns
+    -------
+    numpy.random.Generator
+        Seeded by the SHA-256 of ``"balancelab:<key>:<student>"``: the same for the same pair,
+        on every machine.
+
+    Examples
+    --------
+    >>> float(student_rng("exam-lamp", "s1").uniform()) == float(student_rng("exam-lamp", "s1").uniform())
+    True
+    """
     import hashlib
 
     import numpy as np
 
+    seed = int.from_bytes(hashlib.sha256(f"balancelab:{key}:{student}".encode()).digest()[:8], "big")
+    return np.random.default_rng(seed)
+
+
+@functools.lru_cache(maxsize=4096)
+def _drawn(task_id: str, student: str) -> dict:
+    """A task's numbers for ``student`` (cached: a ``distinct`` draw may compute answers)."""
     t = _TASKS[task_id]
     if t.numbers is None:
         raise ValueError(f"task_id: task {task_id} has no personal numbers")
     draw = t.numbers
     if not student:
         return dict(draw(None))
-    seed = int.from_bytes(hashlib.sha256(f"balancelab:{t.id}:{student}".encode()).digest()[:8], "big")
-    rng = np.random.default_rng(seed)
+    rng = student_rng(t.id, student)
     mine = dict(draw(rng))
     if t.distinct is not None:
         value, rel = t.distinct
@@ -327,12 +369,12 @@ def explain(task_id: str) -> str:
     Examples
     --------
     >>> print(explain("1.1").splitlines()[0])
-    Task 1.1: distance of the counterweight from the pivot
+    Task 1.1 (compute): distance of the counterweight from the pivot
     """
     t = _TASKS.get(str(task_id))
     if t is None:
         raise KeyError(f"no task {task_id!r}; tasks are {', '.join(t.id for t in tasks())}")
-    return f"Task {t.id}: {t.title}\n  store your answer in `{t.variable}`: {t.expects}"
+    return f"Task {t.id} ({t.skill}): {t.title}\n  store your answer in `{t.variable}`: {t.expects}"
 
 
 def check(task_id: str, answer: Any) -> Verdict:
@@ -349,7 +391,8 @@ def check(task_id: str, answer: Any) -> Verdict:
     -------
     Verdict
         Prints as a one-line verdict with a hint; ``bool(verdict)`` is whether it is right.
-        Never raises for a malformed answer. Each call is counted (:data:`ATTEMPTS`): the
+        Never raises for a malformed answer. A derive task's answer is refused when the cell
+        that checks it calls a library shortcut (:mod:`.derive`). Each call is counted (:data:`ATTEMPTS`): the
         grade table shows how many checks a notebook ran per task.
 
     Examples
@@ -360,7 +403,26 @@ def check(task_id: str, answer: Any) -> Verdict:
     Task 1.1: ✘ not yet. The answer is NaN or infinite; give a finite number.
       Hint: Store a plain number in m or a string such as '2.5 m'.
     """
+    found = shortcuts(str(task_id), _cell_source())
+    if found and str(task_id) in _TASKS:
+        t = _TASKS[str(task_id)]
+        ATTEMPTS[t.id] = ATTEMPTS.get(t.id, 0) + 1
+        return Verdict(t.id, False, f"Task {t.id} is to be derived by hand, and this cell calls "
+                       f"{', '.join(found)}: the library may confirm your result in another cell, not give it.",
+                       t.expects, 0.0, t.points)
     return check_data(task_id, encode_answer(answer))  # counted there
+
+
+def _cell_source() -> str:
+    """The source of the notebook cell running now (IPython's ``In[-1]``), or ``""`` outside IPython."""
+    try:
+        from IPython import get_ipython
+
+        shell = get_ipython()
+        history = shell.user_ns.get("In") if shell is not None else None
+        return str(history[-1]) if history else ""
+    except Exception:  # no IPython, or a history we cannot read: nothing to inspect
+        return ""
 
 
 def check_data(task_id: str, data: Any, student: str | None = None) -> Verdict:

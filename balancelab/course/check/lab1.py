@@ -80,8 +80,8 @@ def _lamp_numbers(rng) -> dict:
     """Task 1.1's lamp arm: the published numbers, or a student's (drawn from ``rng``)."""
     if rng is None:
         return dict(LAMP_ARM)
-    return dict(mass=round(rng.uniform(0.8, 1.6), 1), length=round(rng.uniform(0.35, 0.55), 2),
-                link_mass=round(rng.uniform(0.4, 0.8), 1), counter_mass=float(rng.choice([2.5, 3.0, 3.5, 4.0])))
+    return dict(mass=round(rng.uniform(0.6, 2.0), 2), length=round(rng.uniform(0.3, 0.6), 3),
+                link_mass=round(rng.uniform(0.3, 1.0), 2), counter_mass=round(rng.uniform(2.0, 5.0), 2))
 
 
 @register_task("1.1", "distance of the counterweight from the pivot", "r_c", "numeric",

@@ -60,8 +60,8 @@ def _lamp_numbers(rng) -> dict:
     """Task 2.1's lamp arm: the published numbers, or a student's (drawn from ``rng``)."""
     if rng is None:
         return dict(LAMP_SPRING)
-    return dict(mass=round(rng.uniform(1.0, 2.0), 1), length=round(rng.uniform(0.3, 0.5), 2),
-                b=round(rng.uniform(0.2, 0.3), 2), c=round(rng.uniform(0.1, 0.15), 2))
+    return dict(mass=round(rng.uniform(0.8, 2.5), 2), length=round(rng.uniform(0.28, 0.55), 3),
+                b=round(rng.uniform(0.18, 0.32), 3), c=round(rng.uniform(0.08, 0.16), 3))
 
 
 @register_task("2.1", "spring rate that balances the lamp arm", "k_lamp", "numeric",

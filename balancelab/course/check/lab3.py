@@ -21,7 +21,8 @@ __all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "lab3_torque_error"]
 #: ``r = length``; spring ends within ``reach_max`` (m) of the pivot in task 3.3.
 LAB3_LEVER: dict[str, Any] = dict(mass=2.0, length=0.5, b=0.3, c=0.2, pulley_error=0.01, free_length=0.1,
                   theta_range=(-math.pi / 3, math.pi / 3), torque_error=0.03, reach_max=0.4)
-#: Task 3.2: an ordinary spring (N/m, m) and the rate of its partner (N/m).
+#: Task 3.2: an ordinary spring (N/m, m) and the rate of its partner (N/m): the published numbers
+#: (each student's are drawn by :func:`_partner_numbers`).
 PARTNER_SPRINGS = dict(k=400.0, free_length=0.05, k_partner=250.0)
 
 
@@ -58,11 +59,12 @@ def _pulley_numbers(rng) -> dict:
     p = LAB3_LEVER
     if rng is None:
         return {k: p[k] for k in ("mass", "length", "b", "c")}
-    return dict(mass=round(rng.uniform(1.5, 2.5), 1), length=round(rng.uniform(0.4, 0.6), 2),
-                b=round(rng.uniform(0.28, 0.40), 2), c=round(rng.uniform(0.12, 0.22), 2))
+    scale = float(np.exp(rng.uniform(np.log(0.4), np.log(2.5))))  # the lever's size: spreads the answers
+    return dict(mass=round(rng.uniform(1.2, 3.0), 2), length=round(scale * rng.uniform(0.35, 0.65), 4),
+                b=round(scale * rng.uniform(0.30, 0.44), 4), c=round(scale * rng.uniform(0.08, 0.20), 4))
 
 
-@functools.lru_cache(maxsize=64)
+@functools.lru_cache(maxsize=1024)
 def _pulley_radius_limit(mass: float, length: float, b: float, c: float) -> float:
     """Pulley radius (m) at which a lever has a torque error of ``pulley_error`` (1 %) of ``m g r``.
 
@@ -77,21 +79,31 @@ def _pulley_radius_limit(mass: float, length: float, b: float, c: float) -> floa
         lever = pulley_lever(mass=mass, length=length, b=b, c=c, radius=radius)
         return pulley_balance_error(lever).residual_torque / scale - LAB3_LEVER["pulley_error"]
 
-    return brentq(excess, 1e-5, 0.05, xtol=1e-8)
+    return brentq(excess, 1e-5, min(0.05, 0.9 * (b - c)), xtol=1e-8)
 
 
 @register_task("3.1", "largest pulley radius for a 1 % torque error", "pulley_radius", "numeric",
-               "a number in metres (or a string like '2.8 mm'); accepted within 2 %", numbers=_pulley_numbers,
-               distinct=(lambda lever: _pulley_radius_limit(**lever), 0.06))
+               "a number in metres (or a string like '2.8 mm'); accepted within 0.5 %", numbers=_pulley_numbers,
+               distinct=(lambda lever: _pulley_radius_limit(**lever), 0.015))
 def _t31(answer, lever):
     return numeric(answer, _pulley_radius_limit(lever["mass"], lever["length"], lever["b"], lever["c"]),
-                   "length", rtol=0.02)
+                   "length", rtol=0.005)
+
+
+def _partner_numbers(rng) -> dict:
+    """Task 3.2's springs (N/m, m): :data:`PARTNER_SPRINGS`, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(PARTNER_SPRINGS)
+    return dict(k=round(float(rng.uniform(200.0, 800.0)), 1), free_length=round(float(rng.uniform(0.025, 0.09)), 4),
+                k_partner=round(float(rng.uniform(120.0, 480.0)), 1))
 
 
 @register_task("3.2", "free length of the partner spring that makes a ZFL pair", "partner_free_length",
-               "numeric", "a number in metres (negative!); accepted within 0.5 %")
-def _t32(answer):
-    return numeric(answer, negative_free_length_partner(**PARTNER_SPRINGS), "length")
+               "numeric", "a number in metres (negative!) for your springs (task_numbers('3.2')); accepted "
+               "within 0.5 %", numbers=_partner_numbers,
+               distinct=(lambda springs: negative_free_length_partner(**springs), 0.015))
+def _t32(answer, springs):
+    return numeric(answer, negative_free_length_partner(**springs), "length")
 
 
 @register_task("3.3", "an ordinary spring that balances the lever within 3 % over +-60 deg (open design)",

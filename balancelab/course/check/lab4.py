@@ -10,7 +10,7 @@ from ...core.elements import Attachment, Load, Spring
 from ...methods.lecture import serial_2r_parallelogram
 from ...methods.lustig import lustig_values
 from ...methods.singh import serial_2r_min_preload
-from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, vector
+from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, vector
 from .core import AnswerError, register_task
 from .data import DesignData, decode_answer, encode_answer
 
@@ -46,17 +46,51 @@ def lab4_singh_arm(a_x=None) -> Design:
     return serial_2r_min_preload(weights=s["weights"], coms=s["coms"], length=s["length"], **extra)
 
 
+def _parallelogram_numbers(rng) -> dict:
+    """Task 4.1's arm (kg, m): :data:`LAB4_PARALLELOGRAM`, or a student's (masses, length, centres of mass from ``rng``)."""
+    p = LAB4_PARALLELOGRAM
+    if rng is None:
+        return {k: (tuple(map(tuple, v)) if k == "coms" else tuple(v) if isinstance(v, tuple) else v)
+                for k, v in p.items()}
+    u = lambda lo, hi, nd=3: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    length = u(0.35, 0.6)
+    return dict(masses=(u(0.7, 1.8), u(0.4, 1.2)), length=length,
+                coms=((round(u(0.3, 0.6) * length, 3), 0.0), (u(0.2, 0.4), 0.0)), b=p["b"], c=p["c"])
+
+
+def _parallelogram_rates(arm: dict) -> tuple[float, float]:
+    p = serial_2r_parallelogram(**arm).parameters
+    return p["k1"], p["k2"]
+
+
 @register_task("4.1", "spring rates (k1, k2) of the parallelogram 2R arm", "k_parallelogram", "numeric",
-               "a pair (k1, k2) in N/m; each accepted within 0.5 %")
-def _t41(answer):
-    p = serial_2r_parallelogram(**LAB4_PARALLELOGRAM).parameters
-    return numeric_vector(answer, (p["k1"], p["k2"]), "stiffness", names=("k1", "k2"))
+               "a pair (k1, k2) in N/m for your arm (task_numbers('4.1')); each accepted within 0.5 %",
+               numbers=_parallelogram_numbers, distinct=(lambda arm: _parallelogram_rates(arm)[0], 0.015))
+def _t41(answer, arm):
+    return numeric_vector(answer, _parallelogram_rates(arm), "stiffness", names=("k1", "k2"))
+
+
+def _singh_numbers(rng) -> dict:
+    """Task 4.2's 2R (N, m): :data:`LAB4_SINGH`'s loads, or a student's (weights, centres of mass, length)."""
+    s = LAB4_SINGH
+    if rng is None:
+        return dict(weights=tuple(s["weights"]), coms=tuple(map(tuple, s["coms"])), length=s["length"])
+    scale = float(np.exp(rng.uniform(np.log(0.4), np.log(2.5))))  # spreads the answers: few classmates share one
+    u = lambda lo, hi, nd=2: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    return dict(weights=(round(scale * u(3.0, 18.0), 2), round(scale * u(8.0, 40.0), 2)), coms=((u(0.5, 1.5), u(0.1, 0.9)), (u(1.0, 3.2), 0.0)),
+                length=u(0.8, 2.2))
+
+
+def _pe_min(arm: dict) -> float:
+    # PE_min depends on the loads only; free choices far apart keep every spring rate positive
+    return float(serial_2r_min_preload(**arm, a_x=(1.0, 6.0, -6.0)).parameters["PE_min"])
 
 
 @register_task("4.2", "least possible constant energy of any balanced version of Singh's 2R", "pe_min_2r",
-               "numeric", "a number in J (loads' energy measured from the base pivot's height); within 0.5 %")
-def _t42(answer):
-    return numeric(answer, lab4_singh_arm().parameters["PE_min"], "energy")
+               "numeric", "a number in J for your arm (task_numbers('4.2'); loads' energy measured from the base "
+               "pivot's height); within 0.5 %", numbers=_singh_numbers, distinct=(_pe_min, 0.015))
+def _t42(answer, arm):
+    return numeric(answer, _pe_min(arm), "energy")
 
 
 def _same_loads(design: Design, ref: Design) -> bool:
@@ -133,3 +167,14 @@ def _t43(answer):
                "numeric", "a number in N/m; accepted within 0.5 %")
 def _t44(answer):
     return numeric(answer, lustig_values(1)["k1"], "stiffness")
+
+
+@register_task("4.5", "formula for the least preload energy PE_min of Singh's 2R", "pe_min_formula", "symbolic",
+               "a sympy expression in W_1, W_2, p_x1, p_y1, p_x2, l (p_y2 = 0; any equivalent form accepted); "
+               "derived by hand: a cell that calls the library's solvers is refused")
+def _t45(answer):
+    import sympy as sp
+
+    W1, W2, px1, py1, px2, l = sp.symbols("W_1 W_2 p_x1 p_y1 p_x2 l", positive=True)
+    expected = sp.sqrt((W1 * px1 + W2 * l) ** 2 + (W1 * py1) ** 2) + W2 * px2
+    return symbolic(answer, expected, "W_1 W_2 p_x1 p_y1 p_x2 l", "your PE_min")

@@ -49,16 +49,48 @@ def _spring_extent(design: Design, n: int = 300) -> np.ndarray:
     return np.array([P.min(axis=0), P.max(axis=0)])
 
 
+def _u(rng, lo: float, hi: float, nd: int = 3) -> float:
+    return round(float(rng.uniform(lo, hi)), nd)
+
+
+def _lecture_numbers(rng) -> dict:
+    """Task 5.1's four-bar (kg, m): the lecture's masses and centres of mass, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(masses=(1.0, 2.0, 1.5), coms=((0.15, 0.0), (0.4, 0.1), (0.3, 0.0)))
+    scale = float(np.exp(rng.uniform(np.log(0.4), np.log(2.5))))  # spreads the answers: few classmates share one
+    return dict(masses=(round(scale * _u(rng, 0.4, 2.0), 3), round(scale * _u(rng, 0.8, 4.0), 3), 1.5),
+                coms=((_u(rng, 0.05, 0.25), 0.0), (_u(rng, 0.25, 0.55), _u(rng, 0.0, 0.2)), (0.3, 0.0)))
+
+
+def _crank_rate(numbers: dict) -> float:
+    return float(fourbar_two_springs(**numbers).parameters["k2"])
+
+
 @register_task("5.1", "spring rate on the crank of the lecture's four-bar with two springs", "k_crank",
-               "numeric", "a number in N/m; accepted within 0.5 %")
-def _t51(answer):
-    return numeric(answer, fourbar_two_springs().parameters["k2"], "stiffness")
+               "numeric", "a number in N/m for your four-bar (task_numbers('5.1')); accepted within 0.5 %",
+               numbers=_lecture_numbers, distinct=(_crank_rate, 0.015))
+def _t51(answer, numbers):
+    return numeric(answer, _crank_rate(numbers), "stiffness")
+
+
+def _singh_numbers(rng) -> dict:
+    """Task 5.2's loads (N): Singh's three weights, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(weights=(10.0, 20.0, 10.0))
+    scale = float(np.exp(rng.uniform(np.log(0.4), np.log(2.5))))  # spreads the answers: few classmates share one
+    return dict(weights=tuple(round(scale * _u(rng, lo, hi), 2) for lo, hi in ((3.0, 18.0), (8.0, 40.0), (3.0, 20.0))))
+
+
+def _pe_min(numbers: dict) -> float:
+    # PE_min depends on the loads only; free choices far apart keep every spring rate positive
+    return float(singh_fourbar(**numbers, a_x=(1.0, 6.0, -6.0)).parameters["PE_min"])
 
 
 @register_task("5.2", "constant energy of Singh's four-bar balanced with minimum preload", "pe_min_fourbar",
-               "numeric", "a number in J; accepted within 0.5 %")
-def _t52(answer):
-    return numeric(answer, singh_fourbar().parameters["PE_min"], "energy")
+               "numeric", "a number in J for your weights (task_numbers('5.2')); accepted within 0.5 %",
+               numbers=_singh_numbers, distinct=(_pe_min, 0.015))
+def _t52(answer, numbers):
+    return numeric(answer, _pe_min(numbers), "energy")
 
 
 @register_task("5.3", "a technique-2 balancer whose springs fit in the box (open design)", "technique2_choice",

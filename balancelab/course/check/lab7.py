@@ -21,6 +21,8 @@ from typing import Any
 
 import functools
 
+import numpy as np
+
 from ...core.design import Design
 from ...core.elements import Spring
 from ...methods.general import balance, free_choices
@@ -89,10 +91,11 @@ def _arm_personal(rng) -> dict:
     """Task 7.2's arm (m, kg): :data:`LAB7_ARM`, or a student's (lengths, masses and lamp from ``rng``)."""
     if rng is None:
         return {k: tuple(v) if isinstance(v, tuple) else v for k, v in LAB7_ARM.items()}
-    lengths = tuple(round(float(x), 2) for x in (rng.uniform(0.38, 0.52), rng.uniform(0.28, 0.42),
-                                                 rng.uniform(0.2, 0.3)))
-    masses = tuple(round(float(x), 1) for x in (rng.uniform(1.4, 2.2), rng.uniform(0.9, 1.5), rng.uniform(0.6, 1.0)))
-    return dict(lengths=lengths, masses=masses, lamp=round(float(rng.uniform(0.3, 0.5)), 2))
+    lengths = tuple(round(float(x), 3) for x in (rng.uniform(0.34, 0.6), rng.uniform(0.25, 0.45),
+                                                 rng.uniform(0.18, 0.32)))
+    scale = float(np.exp(rng.uniform(np.log(0.4), np.log(2.5))))  # spreads the answers: few classmates share one
+    masses = tuple(round(scale * float(x), 3) for x in (rng.uniform(1.0, 3.0), rng.uniform(0.6, 2.2), rng.uniform(0.4, 1.4)))
+    return dict(lengths=lengths, masses=masses, lamp=round(scale * float(rng.uniform(0.2, 0.8)), 3))
 
 
 def _key(numbers: dict) -> tuple:
@@ -105,7 +108,7 @@ def _free_choices_left(key: tuple) -> int:
     return free_choices(arm, springs=lab7_candidates(arm)).free_choices
 
 
-@functools.lru_cache(maxsize=64)
+@functools.lru_cache(maxsize=1024)
 def _least_stiffness(key: tuple) -> float:
     arm = lab7_arm(dict(zip(("lengths", "masses", "lamp"), key)))
     stiff = balance(arm, springs=lab7_candidates(arm), objective="min_stiffness")

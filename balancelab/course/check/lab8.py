@@ -25,7 +25,7 @@ from ...methods.practice.forces import generalized_force
 from ...methods.practice.selection import spring_strokes
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.practice.tolerance import Tolerances, monte_carlo
-from .answers import as_mapping, numeric, quantity
+from .answers import as_mapping, numeric, quantity, symbolic
 from .core import AnswerError, register_task
 
 __all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB8_RATE_ERROR", "lab8_arm",
@@ -211,7 +211,7 @@ def _t81(answer):
 @register_task("8.2", "95 % quantile of the worst residual of built arms with your springs", "tolerance_study",
                "design", "a dict {'springs': your springs of task 8.1, 'quantile': N m}: the 95 % quantile of "
                "the worst residual over a Monte Carlo of built arms with the lab's tolerances; accepted within "
-               "10 % of the grader's Monte Carlo, and it must be at most 0.5 N m")
+               "10 % of the grader's Monte Carlo, and it must be at most 0.5 N m", skill="compute")
 def _t82(answer, n: int = 4000):
     a = as_mapping(answer, ("springs", "quantile"), "your study")
     value = quantity(a["quantile"], "torque", "the quantile")
@@ -228,8 +228,37 @@ def _t82(answer, n: int = 4000):
     return True, f"95 % of built arms stay within {value:.3g} N m, under {LAB8_QUANTILE_LIMIT:g} N m.", ""
 
 
-@register_task("8.3", "shoulder torque (N m) left by spring 1 being 2 % too stiff, link 1 horizontal",
-               "shoulder_torque", "numeric", "a number in N m (its size); accepted within 0.5 %")
-def _t83(answer):
-    q, Q = generalized_force(rate_error_arm(LAB8_RATE_ERROR), np.array([[0.0, 0.0]]))
-    return numeric(answer, float(abs(Q[0, 0])), "torque")
+def _rate_error_numbers(rng) -> dict:
+    """Task 8.3's rate error of spring 1 (a fraction) and angle of link 1 (rad, from the horizontal; link 2
+    at ``theta_2 = 0``): the published ones (2 %, horizontal), or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(rate_error=LAB8_RATE_ERROR, theta_1=0.0)
+    return dict(rate_error=round(float(rng.uniform(0.01, 0.05)), 5), theta_1=round(float(rng.uniform(-1.1, 1.1)), 4))
+
+
+def _shoulder_torque(numbers: dict) -> float:
+    q = np.array([[numbers["theta_1"], 0.0]])
+    _, Q = generalized_force(rate_error_arm(numbers["rate_error"]), q)
+    return float(abs(Q[0, 0]))
+
+
+@register_task("8.3", "shoulder torque (N m) left by spring 1 being too stiff by your rate error, link 1 at your "
+               "angle", "shoulder_torque", "numeric", "a number in N m (its size) for your rate error and angle "
+               "(task_numbers('8.3'): theta_1 in rad, theta_2 = 0); accepted within 0.5 %",
+               numbers=_rate_error_numbers, distinct=(_shoulder_torque, 0.015))
+def _t83(answer, numbers):
+    return numeric(answer, _shoulder_torque(numbers), "torque")
+
+
+@register_task("8.4", "formula for the shoulder torque dV/dtheta_1 left by a rate error eps of spring 1",
+               "torque_formula", "symbolic",
+               "a sympy expression in epsilon, g, m_1, p_1, m_2, l_1, theta_1: the derivative of the arm's "
+               "potential energy with respect to theta_1, sign included (any equivalent form accepted); "
+               "derived by hand: a cell that calls the library's solvers is refused")
+def _t84(answer):
+    import sympy as sp
+
+    eps, g, m1, p1, m2, l1 = sp.symbols("epsilon g m_1 p_1 m_2 l_1", positive=True)
+    th = sp.Symbol("theta_1", real=True)
+    expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th)
+    return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1")
