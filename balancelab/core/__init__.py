@@ -1,7 +1,9 @@
 """Core: the parts of a design and the design itself.
 
 What lives here: the input checks (``validation``), loads, springs and joints
-(``elements``), the package's exception types (``errors``), the `Kinematics` contract every mechanism implements (``kinematics``),
+(``elements``), the package's exception types (``errors``), the one transform kernel (``frames``:
+a body's local point carried to the world and back), the `Kinematics` contract every mechanism
+implements and the one finite-difference loop over configurations (``kinematics``),
 the immutable :class:`Design` with its numeric energy and balance report (``design``)
 and its symbolic energy and balance conditions (``symbolic``).
 

@@ -19,7 +19,8 @@ import numpy as np
 from . import report as _report, symbolic as _symbolic
 from .elements import Joint, Load, Spring, SymbolicParts
 from .errors import UnreachableConfiguration
-from .kinematics import Kinematics, body_to_world, joint_gaps, spread
+from .frames import place
+from .kinematics import Kinematics, body_to_world, central_difference, joint_gaps, spread
 from .report import BALANCE_TOLERANCE, BalanceReport, Energy
 from .validation import positive_int, real_array, sequence_of, step_size
 
@@ -385,9 +386,7 @@ class Design:
                 angle = poses[..., body, 2]
                 trig[body] = (np.cos(angle), np.sin(angle))
             c, s = trig[body]
-            if p[1] == 0:
-                return x + c * p[0], y + s * p[0]
-            return x + c * p[0] - s * p[1], y + s * p[0] + c * p[1]
+            return place(x, y, c, s, p)
 
         vl = []
         for b, p, f in zip(self._lb, self._lp, self._lf):
@@ -472,19 +471,7 @@ class Design:
         numpy.ndarray
         """
         q, h = self.check_q(q), step_size("h (step, rad)", h, 0.1)
-        out = np.empty(q.shape)
-        for i in range(self.dof):
-            e = np.zeros(self.dof)
-            e[i] = h
-            okp = self.reachable(q + e)
-            okm = self.reachable(q - e)
-            qp = np.where(okp[..., None], q + e, q)
-            qm = np.where(okm[..., None], q - e, q)
-            vp = self.potential_energy(qp).total
-            vm = self.potential_energy(qm).total
-            den = np.where(okp, h, 0.0) + np.where(okm, h, 0.0)
-            out[..., i] = (vp - vm) / np.where(den > 0, den, 1.0)
-        return out
+        return central_difference(lambda x: self.potential_energy(x).total, self.reachable, q, h)
 
     def balance_report(self, q=None, *, n: int = 1000, seed: int | None = 0,
                        tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:

@@ -1,11 +1,12 @@
-"""The one geometry kernel of the mechanisms: rotations, rigid-body points, circle intersections.
+"""The one geometry kernel of the mechanisms: rigid-body points, circle intersections (rotations: core).
 
 Every closed-form loop solution in :mod:`balancelab.mechanisms` places its joints with
 these functions; they work on numpy arrays (vectorized over configurations) and, where
 noted, on sympy expressions. Methods that write planar vectors as complex numbers
 convert with :func:`as_complex` and :func:`as_point`; a pose function built on these
-numeric-only tools guards its sympy path with :func:`numeric_only`. Layer: mechanisms;
-imports only the input checks of ``core``.
+numeric-only tools guards its sympy path with :func:`numeric_only`. :func:`rotate` is the
+transform kernel's (:mod:`balancelab.core.frames`), re-exported here. Layer: mechanisms;
+imports the input checks and the transform kernel of ``core``.
 """
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from types import ModuleType
 
 import numpy as np
 
+from ..core.frames import rotate
 from ..core.validation import planar_point
 
 __all__ = ["Point", "rotate", "binary_link_point", "circle_intersection", "as_complex", "as_point",
@@ -21,12 +23,6 @@ __all__ = ["Point", "rotate", "binary_link_point", "circle_intersection", "as_co
 
 #: a planar point or vector ``(x, y)`` (m), in type hints
 Point = tuple[float, float]
-
-
-def rotate(lib, angle, point):
-    """Rotate the local ``point`` by ``angle`` with the math library ``lib`` (numpy or sympy)."""
-    c, s = lib.cos(angle), lib.sin(angle)
-    return (c * point[0] - s * point[1], s * point[0] + c * point[1])
 
 
 def binary_link_point(p1, p2, q1, q2, q):
