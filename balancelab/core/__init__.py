@@ -11,12 +11,12 @@ What it may import: numpy (and sympy lazily), nothing else of balancelab. Everyt
 else imports core.
 """
 from .design import BALANCE_TOLERANCE, BalanceReport, Design, Energy
-from .errors import (ApproximationError, BalancelabError, InfeasibleDesign, SingularChoice,
-                     UnreachableConfiguration)
+from .errors import (AnswerError, ApproximationError, BalancelabError, InfeasibleDesign, MarkerError, ProfileError,
+                     SingularChoice, UnreachableConfiguration)
 from .elements import G, Attachment, CablePath, Joint, Load, Pulley, Spring, SymbolicParts, gravity_load
 from .kinematics import Kinematics, body_to_world, joint_gaps
 
 __all__ = ["BALANCE_TOLERANCE", "BalanceReport", "Design", "Energy", "BalancelabError", "UnreachableConfiguration",
-           "InfeasibleDesign", "SingularChoice", "ApproximationError", "G",
+           "InfeasibleDesign", "SingularChoice", "ApproximationError", "ProfileError", "MarkerError", "AnswerError", "G",
            "Attachment", "CablePath", "Joint", "Load", "Pulley", "Spring", "SymbolicParts", "gravity_load", "Kinematics",
            "body_to_world", "joint_gaps"]

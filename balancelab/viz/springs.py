@@ -2,12 +2,12 @@
 
 The shape follows the spring's ``realization``. A spring realized by a pulley
 (``spring.pulley``, a :class:`balancelab.core.elements.Pulley`) is drawn from the same
-object the exact string model reads (:func:`balancelab.methods.realize.pulley_string`):
+object the exact string model reads (:func:`balancelab.mechanisms.geometry.pulley_string`):
 the string leaves the attachment on the tangent to the pulley, wraps round it in the
 pulley's sense and runs on to a coil on the pulley's ``spring_direction`` side, so the
 picture cannot put the spring where the model does not.
 
-Layer: viz; imports ``balancelab.core`` and ``balancelab.methods.realize``.
+Layer: viz; imports ``balancelab.core`` and ``balancelab.mechanisms``.
 """
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from ..core.elements import Pulley, Spring
-from ..methods.realize import pulley_string
+from ..mechanisms.geometry import pulley_string
 from .frame import STYLE
 
 __all__ = ["cable_angle", "cable_coil_end", "cable_coil_ends", "cable_path", "coil_path", "gas_path", "profile_outline",

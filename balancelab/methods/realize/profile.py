@@ -31,6 +31,7 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ...core.elements import CablePath
+from ...core.errors import ProfileError
 from ...core.frames import place, turn
 
 __all__ = ["CableGeometry", "NoncircularProfile", "ProfileError"]
@@ -38,10 +39,6 @@ __all__ = ["CableGeometry", "NoncircularProfile", "ProfileError"]
 #: how far (in the profile's parameter, 1 = half the range) the tangent point may leave the
 #: profile before the model refuses: the step of a numerical derivative at the range's ends
 _EDGE = 1e-5
-
-
-class ProfileError(ValueError):
-    """Raised when no wrappable profile exists, or when the cable leaves the profile."""
 
 
 class CableGeometry(NamedTuple):
