@@ -8,7 +8,7 @@ import numpy as np
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
-from ...core.validation import MIN_POSITIVE, finite_real
+from ...core.validation import MIN_POSITIVE, finite_real, real_array
 from ...mechanisms.lever import lever_design
 
 __all__ = ["lacoste_lever", "lacoste_energies", "generalized_lever", "min_preload_lever"]
@@ -89,7 +89,7 @@ def lacoste_energies(weight: float, length: float, a_x, b_y) -> np.ndarray:
     >>> lacoste_energies(10.0, 0.5, [0.2, 0.4], 0.4).round(3).tolist()
     [6.25, 5.0]
     """
-    a_x, b_y = np.broadcast_arrays(np.asarray(a_x, dtype=float), np.asarray(b_y, dtype=float))
+    a_x, b_y = np.broadcast_arrays(real_array("a_x (m)", a_x), real_array("b_y (m)", b_y))
     out = np.empty(a_x.shape)
     q = np.linspace(-np.pi, np.pi, 4, endpoint=False)[:, None]
     for idx in np.ndindex(a_x.shape):
