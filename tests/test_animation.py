@@ -6,6 +6,7 @@ import io
 import math
 import os
 import re
+from pathlib import Path
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
@@ -251,3 +252,83 @@ def test_player_needs_words_for_an_animation_that_has_none():
     p = bl.viz.player(anim, 'a "quoted" <line>')
     assert 'alt="a &quot;quoted&quot; &lt;line&gt;"' in p.html
     assert 'aria-valuetext="frame 1 of 3"' in p.html
+
+
+# ------------------------------------------------------------------ matplotlib: the range we support
+def _declared_matplotlib() -> str:
+    import tomllib
+
+    deps = tomllib.loads((Path(__file__).parents[1] / "pyproject.toml").read_text())["project"]["dependencies"]
+    (spec,) = [d for d in deps if d.replace(" ", "").startswith("matplotlib") and "inline" not in d]
+    return spec.replace(" ", "")[len("matplotlib"):]
+
+
+def test_matplotlib_is_inside_the_range_the_animations_are_tested_with():
+    """The animations lean on a few matplotlib internals (WRITER_INTERNALS), so the supported range
+    is bounded: pyproject.toml, constraints.txt and the module say the same, and the installed
+    matplotlib is inside it."""
+    import matplotlib
+    from packaging.specifiers import SpecifierSet
+    from packaging.version import Version
+
+    from balancelab.viz import animation
+
+    declared = _declared_matplotlib()
+    assert declared == animation.MATPLOTLIB_RANGE
+    spec = SpecifierSet(declared)
+    assert any(s.operator == "<" for s in spec), f"matplotlib{declared} has no upper bound"
+    pins = [line.split("==")[1].strip() for line in
+            (Path(__file__).parents[1] / "constraints.txt").read_text().splitlines()
+            if line.startswith("matplotlib==")]
+    assert pins and all(Version(p) in spec for p in pins), (pins, declared)
+    assert Version(matplotlib.__version__) in spec, (matplotlib.__version__, declared)
+
+
+def test_the_matplotlib_internals_the_player_uses_exist_in_this_version(tmp_path):
+    from matplotlib.animation import FuncAnimation, HTMLWriter
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from balancelab.viz.animation import WRITER_INTERNALS
+
+    fig = Figure()
+    FigureCanvasAgg(fig)
+    writer = HTMLWriter(fps=24, embed_frames=True)
+    writer.setup(fig, str(tmp_path / "a.html"))
+    missing = [name for name in WRITER_INTERNALS if not hasattr(writer, name)]
+    assert not missing and callable(getattr(FuncAnimation, "_post_draw", None)), missing
+
+
+def test_the_animation_modules_touch_no_other_private_matplotlib_name():
+    """Private attributes read in viz/animation.py and viz/player.py: matplotlib's listed ones, or
+    the module's own (its blitter, its saving flag, its cache)."""
+    import ast
+    import re
+
+    import balancelab.viz as viz
+    from balancelab.viz.animation import WRITER_INTERNALS
+
+    own = {"_blitter", "_compact_saving", "_balancelab_html"}
+    allowed = set(WRITER_INTERNALS) | {"_post_draw"} | own | {"_fig"}   # _fig: player() of a foreign animation
+    for name in ("animation.py", "player.py"):
+        tree = ast.parse((Path(viz.__file__).parent / name).read_text())
+        used = {n.attr for n in ast.walk(tree) if isinstance(n, ast.Attribute) and re.match(r"_[a-z]", n.attr)}
+        assert used <= allowed, f"{name} reads private {sorted(used - allowed)}"
+
+
+def test_an_animation_knows_its_frames_and_is_dropped_without_a_warning():
+    import gc
+    import warnings
+
+    import balancelab as bl
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        anim = bl.animate(bl.catalog()["lacoste_lever"](), frames=5)
+        assert anim.frame_count == 5 and anim.figure is not None and anim.fps == 24
+        assert anim.frame_image(4).shape[-1] == 3
+        with pytest.raises(IndexError, match="frame 5 of an animation of 5 frames"):
+            anim.frame_image(5)
+        unrendered = bl.animate(bl.catalog()["lacoste_lever"](), frames=3)
+        del unrendered
+        gc.collect()

@@ -84,6 +84,9 @@ MANUAL = {
     # lustig
     "SerialChain": (lustig.SerialChain, ((0.3, 0.3), (2.0, 2.0), ((0.1, 0.0), (0.15, 0.0))), {}),
     "chain_kinematics": (lustig.chain_kinematics, ((0.3, 0.2),), {}),
+    "serial_chain_kinematics": (mech.serial_chain_kinematics, ((0.3, 0.2),), {}),
+    "serial_chain_joints": (mech.serial_chain_joints, ((0.3, 0.2),), {}),
+    "lacoste_energies": (singh.lacoste_energies, (10.0, 0.5, 0.2, 0.3), {}),
     "chain_parameter_names": (lustig.chain_parameter_names, (2, lustig.LUSTIG_TOPOLOGY), {}),
     "stiffness_matrix": (lustig.stiffness_matrix, (CHAIN(),), {}),
     "quadratic_energy": (lustig.quadratic_energy, (CHAIN(), [0.1, 0.2]), {}),
@@ -169,6 +172,7 @@ EXEMPT = {
     "lustig_case3": "takes no argument", "lustig_case4": "takes no argument",
     "NoncircularProfile": "built by noncircular_pulley from its synthesis (Chebyshev series); not a user-facing builder",
     "sleeve_derivation": "takes no argument", "normal_spring_derivation": "takes no argument",
+    "SymbolicChainKinematics": "wraps a checked serial_chain_kinematics with sympy lengths (symbolic energy only)",
     "CableGeometry": "a result (NamedTuple)", "ProfilePart": "a result (NamedTuple)", "ProfileError": "an exception",
 }
 

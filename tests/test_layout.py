@@ -145,9 +145,11 @@ def test_method_families_import_only_the_families_they_declare():
     assert seen == declared, f"declared edges no module uses: {declared - seen}"
 
 
-def test_no_module_import_cycle():
-    """Module-level imports (and imports hidden inside functions) form no cycle; an import for type
-    checkers only (``if TYPE_CHECKING:``, the package's own annotations) never runs, so it cannot."""
+def _import_graph() -> dict:
+    """``module -> modules it imports``, at module level or inside functions: a package's
+    ``__init__`` importing its own submodules counts (it runs them), a submodule importing its
+    parent package does not (Python has run the parent first)."""
+    modules = {_name(p) for p in MODULES}
     graph = {}
     for path in MODULES:
         name = _name(path)
@@ -155,8 +157,57 @@ def test_no_module_import_cycle():
         for target, names in _imports(path, typing=False):
             targets.add(target)
             targets.update(f"{target}.{n}" for n in names)    # "from .pkg import module"
-        graph[name] = {t for t in targets if t in {_name(p) for p in MODULES} and t != name
-                       and not name.startswith(t + ".") and not t.startswith(name + ".")}
+        graph[name] = {t for t in targets if t in modules and t != name and not name.startswith(t + ".")}
+    return graph
+
+
+def _function_level_targets(name: str, source: str) -> set:
+    """Every balancelab module (or package) imported inside a function of the module ``name``
+    (a package's name for its ``__init__``, told by ``source`` naming it ``__init__``)."""
+    package = name if name.endswith("__init__") else name.rpartition(".")[0]
+    package = package.removesuffix(".__init__")
+    out = set()
+    for fn in ast.walk(ast.parse(source)):
+        if not isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        for node in ast.walk(fn):
+            if isinstance(node, ast.ImportFrom):
+                if node.level:
+                    base = package.split(".")
+                    base = base[:len(base) - node.level + 1]
+                    target = ".".join(base + ([node.module] if node.module else []))
+                else:
+                    target = node.module or ""
+                found = [target] + [f"{target}.{a.name}" for a in node.names]
+            elif isinstance(node, ast.Import):
+                found = [a.name for a in node.names]
+            else:
+                continue
+            out.update(t for t in found if t.split(".")[0] == "balancelab")
+    return out
+
+
+def _module_key(path: Path) -> str:
+    """The name :func:`_function_level_targets` takes: ``pkg.__init__`` for a package."""
+    return _name(path) + (".__init__" if path.name == "__init__.py" else "")
+
+
+def _reaches(graph: dict, start: str, goal: str) -> bool:
+    seen, todo = set(), [start]
+    while todo:
+        node = todo.pop()
+        if node == goal:
+            return True
+        if node not in seen:
+            seen.add(node)
+            todo.extend(graph.get(node, ()))
+    return False
+
+
+def test_no_module_import_cycle():
+    """Module-level imports (and imports hidden inside functions) form no cycle; an import for type
+    checkers only (``if TYPE_CHECKING:``, the package's own annotations) never runs, so it cannot."""
+    graph = _import_graph()
     state = {}
 
     def visit(node, stack):
@@ -172,6 +223,34 @@ def test_no_module_import_cycle():
     for node in sorted(graph):
         if node not in state:
             visit(node, [node])
+
+
+def test_no_function_level_import_hides_a_cycle():
+    """An import written inside a function never hides a loop: whatever a function imports does not
+    import (through packages and their submodules, at any level) the module of that function."""
+    graph = _import_graph()
+    hidden = []
+    for path in MODULES:
+        name = _name(path)
+        for target in _function_level_targets(_module_key(path), path.read_text(encoding="utf-8")):
+            if target in graph and target != name and not name.startswith(target + ".") \
+                    and _reaches(graph, target, name):
+                hidden.append(f"{name} imports {target} inside a function, and {target} imports {name}")
+    assert not hidden, "\n".join(hidden)
+
+
+def test_the_cycle_check_sees_package_inits_and_imports_inside_functions():
+    """The edges that once hid cycles are in the graph: a package's ``__init__`` running its
+    submodules (registry -> family -> registry), and an import written inside a function."""
+    graph = _import_graph()
+    assert "balancelab.methods.lustig.chain" in graph["balancelab.methods.lustig"]
+    source = "def examples():\n    from . import deepak, singh\n    import balancelab.viz\n"
+    assert _function_level_targets("balancelab.methods.registry", source) >= {
+        "balancelab.methods.deepak", "balancelab.methods.singh", "balancelab.viz"}
+    assert _function_level_targets("balancelab.methods.__init__", "def f():\n    from .registry import example\n") \
+        >= {"balancelab.methods.registry", "balancelab.methods.registry.example"}
+    graph["balancelab.methods.registry"] = graph["balancelab.methods.registry"] | {"balancelab.methods.singh"}
+    assert _reaches(graph, "balancelab.methods.singh", "balancelab.methods.registry")
 
 
 def test_subpackage_docstrings_say_what_lives_there_and_what_it_may_import():

@@ -173,7 +173,7 @@ class Pulley:
     pulley; the string tied to it comes in parallel to ``-spring_direction``, wraps round
     the pulley counter-clockwise (``turn = 1``) or clockwise (``turn = -1``) and leaves
     on the tangent towards the attachment ``b`` on the moving link. The exact string
-    model (:func:`balancelab.methods.realize.pulley_string`) and the drawing
+    model (:func:`balancelab.mechanisms.geometry.pulley_string`) and the drawing
     (:func:`balancelab.viz.draw`) both read this object.
 
     Parameters

@@ -1,6 +1,7 @@
 """The package's exceptions: one base class, and every error type a caller may catch.
 
-Every error balancelab raises on purpose is a :class:`BalancelabError`; each also derives from
+Every error balancelab raises on purpose is a :class:`BalancelabError` (the course tools' too:
+a malformed answer, a broken solution marker); each also derives from
 the built-in exception a caller would expect (bad values are ``ValueError``), so
 ``except ValueError`` keeps working. Modules raise these types; none defines its own.
 
@@ -14,7 +15,7 @@ from __future__ import annotations
 from typing import Any, Sequence
 
 __all__ = ["BalancelabError", "UnreachableConfiguration", "InfeasibleDesign", "SingularChoice",
-           "ApproximationError"]
+           "ApproximationError", "ProfileError", "MarkerError", "AnswerError"]
 
 
 class BalancelabError(Exception):
@@ -90,3 +91,51 @@ class ApproximationError(BalancelabError, RuntimeError):
     >>> issubclass(ApproximationError, RuntimeError)
     True
     """
+
+
+class ProfileError(BalancelabError, ValueError):
+    """Raised when no wrappable non-circular profile exists, or when the cable leaves the profile.
+
+    Raised by :mod:`balancelab.realize` (also importable from there).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> bl.realize.ProfileError is ProfileError and issubclass(ProfileError, ValueError)
+    True
+    """
+
+
+class MarkerError(BalancelabError, ValueError):
+    """A solution marker of a lab notebook is missing its partner or nested.
+
+    Raised by :mod:`balancelab.course.labtools` when it makes the student version of a lab.
+
+    Examples
+    --------
+    >>> issubclass(MarkerError, ValueError)
+    True
+    """
+
+
+class AnswerError(BalancelabError, ValueError):
+    """A malformed answer to a lab task; its message is shown to the student as the verdict.
+
+    Parameters
+    ----------
+    message : str
+        What is wrong with the answer (shown as the verdict's message).
+    hint : str
+        How to write it instead (shown as the verdict's hint); the task's ``expects``
+        text when empty.
+
+    Examples
+    --------
+    >>> e = AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
+    >>> str(e), e.hint
+    ('k must be positive.', 'A spring rate is > 0 N/m.')
+    """
+
+    def __init__(self, message: str, hint: str = "") -> None:
+        super().__init__(message)
+        self.hint = hint

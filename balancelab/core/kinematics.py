@@ -28,46 +28,14 @@ not the coordinates themselves); the others raise ``NotImplementedError`` there.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["Kinematics", "body_to_world", "joint_gaps", "spread"]
+from .frames import body_to_world
 
-
-def body_to_world(poses: np.ndarray, bodies: ArrayLike, points: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """Global coordinates of local body points, for every configuration.
-
-    Parameters
-    ----------
-    poses : numpy.ndarray, shape (..., nbodies, 3)
-        Body poses ``(x, y, angle)`` (m, m, rad).
-    bodies : array_like of int, shape (n,)
-        Body index of each point.
-    points : array_like, shape (n, 2)
-        Points in their bodies' local frames (m).
-
-    Returns
-    -------
-    (numpy.ndarray, numpy.ndarray)
-        ``x`` and ``y`` (m), each of shape ``(..., n)``.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> poses = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, np.pi / 2]])
-    >>> x, y = body_to_world(poses, [1], [(2.0, 0.0)])
-    >>> round(float(x[0]), 12), round(float(y[0]), 12)
-    (1.0, 2.0)
-    """
-    bodies = np.asarray(bodies, dtype=int)
-    points = np.asarray(points, dtype=float).reshape(-1, 2)
-    P = poses[..., bodies, :]
-    c, s = np.cos(P[..., 2]), np.sin(P[..., 2])
-    x = P[..., 0] + c * points[:, 0] - s * points[:, 1]
-    y = P[..., 1] + s * points[:, 0] + c * points[:, 1]
-    return x, y
+__all__ = ["Kinematics", "body_to_world", "central_difference", "joint_gaps", "spread"]
 
 
 def joint_gaps(poses: np.ndarray, joints: Sequence) -> np.ndarray:
@@ -96,6 +64,50 @@ def joint_gaps(poses: np.ndarray, joints: Sequence) -> np.ndarray:
     xi, yi = body_to_world(poses, [j[0] for j in joints], [j[1] for j in joints])
     xj, yj = body_to_world(poses, [j[2] for j in joints], [j[3] for j in joints])
     return np.hypot(xi - xj, yi - yj)
+
+
+def central_difference(value: Callable[[np.ndarray], np.ndarray], reachable: Callable[[np.ndarray], np.ndarray],
+                       q: np.ndarray, h: float) -> np.ndarray:
+    """Derivative of ``value`` with respect to each configuration coordinate, shape ``(..., dof)``.
+
+    The one finite-difference loop of balancelab: central differences ``(v(q + h e_i) -
+    v(q - h e_i)) / 2h``; where a neighbour is unreachable, the one-sided difference from ``q``
+    itself (``value`` is never called at an unreachable configuration); where both are, zero.
+
+    Parameters
+    ----------
+    value : callable
+        ``value(q)`` for configurations of shape ``(m, dof)`` (or ``q``'s shape): an array whose
+        *last* axis runs over the configurations (``(m,)``, ``(k, m)``, ...).
+    reachable : callable
+        ``reachable(q)``: boolean mask of shape ``(m,)``.
+    q : numpy.ndarray, shape (m, dof)
+        Configurations (rad for angles, m for slides), all reachable.
+    h : float
+        Step, > 0 (the caller checks it).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``value``'s shape plus a last axis of length ``dof``.
+
+    Examples
+    --------
+    >>> q = np.array([[0.0], [1.0]])
+    >>> d = central_difference(lambda q: np.sin(q[..., 0]), lambda q: q[..., 0] <= 1.0, q, 1e-6)
+    >>> np.round(d[:, 0], 5).tolist()     # cos 0, and one-sided at the end of the range
+    [1.0, 0.5403]
+    """
+    dof = q.shape[-1]
+    out = []
+    for i in range(dof):
+        e = np.zeros(dof)
+        e[i] = h
+        okp, okm = reachable(q + e), reachable(q - e)
+        vp = value(np.where(okp[..., None], q + e, q))
+        vm = value(np.where(okm[..., None], q - e, q))
+        out.append((vp - vm) / (h * np.maximum(okp.astype(float) + okm.astype(float), 1.0)))
+    return np.stack(out, -1)
 
 
 def spread(q_range: np.ndarray, n: int) -> np.ndarray:

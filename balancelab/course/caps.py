@@ -28,9 +28,10 @@ import uuid
 from dataclasses import dataclass
 from pathlib import Path
 
-from .sandbox import WORK
+__all__ = ["WORK", "Caps", "Cgroup", "probe", "LIMITER", "measure_folders", "cap_notes"]
 
-__all__ = ["Caps", "Cgroup", "probe", "LIMITER", "measure_folders", "cap_notes"]
+#: The sandbox's working folder and home (a tmpfs of its own; the sandbox mounts it, the caps size it).
+WORK = "/home/student"
 
 MB = 2 ** 20
 _ROOT = Path("/sys/fs/cgroup")
@@ -332,7 +333,8 @@ LIMITER = ("import os, resource, sys\n"
 
 def _descendants(pid: int) -> list[int]:
     """``pid`` and every process below it, parents first (read from ``/proc``)."""
-    out, todo = [], [pid]
+    out: list[int] = []
+    todo = [pid]
     while todo and len(out) < 4096:
         p = todo.pop(0)
         out.append(p)

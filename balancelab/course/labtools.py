@@ -30,6 +30,7 @@ import shutil
 import sys
 from pathlib import Path
 
+from ..core.errors import MarkerError
 from .launch import (GRADER_MODULES, SETUP_TAG, STUDENT_README, add_setup_cell, course_repository,
                      setup_source)
 
@@ -54,20 +55,6 @@ WIDGET_TEXT = "Live explorer: run the notebook to use its sliders."
 _ROOT = Path(__file__).resolve().parents[2]  # the repository: balancelab/course/labtools.py
 DEFAULT_SOLUTIONS = _ROOT / "labs" / "solutions"
 DEFAULT_STUDENT = _ROOT / "labs" / "student"
-
-
-class MarkerError(ValueError):
-    """A solution marker is missing its partner or nested.
-
-    Examples
-    --------
-    >>> import nbformat
-    >>> nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("# BEGIN SOLUTION\\nk = 2")])
-    >>> student_version(nb, "lab9.ipynb")  # doctest: +ELLIPSIS
-    Traceback (most recent call last):
-    ...
-    balancelab.course.labtools.MarkerError: lab9.ipynb: cell 0: '# BEGIN SOLUTION' is never closed by ...
-    """
 
 
 def _strip_code(src: str, where: str) -> tuple[str, list[str]]:

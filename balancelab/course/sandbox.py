@@ -32,6 +32,8 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import caps
+
 __all__ = ["bwrap_path", "sandbox_available", "sandbox_command", "RunResult", "run_limited", "kernel_runs_as_nobody", "NOBODY",
            "assume_kernel_user",
            "NO_SANDBOX_WARNING", "kernel_binds", "limited", "precompile_package", "WORK", "SHARE"]
@@ -180,8 +182,7 @@ def precompile_package() -> bool:
         return False
 
 
-#: The sandbox's working folder and home (a tmpfs of its own).
-WORK = "/home/student"
+WORK = caps.WORK  # the sandbox's working folder and home (a tmpfs of its own)
 #: Where the shared folder (the kernel's sockets) appears inside the sandbox (a short path: a unix
 #: socket's path has at most 107 bytes).
 SHARE = "/run/balancelab"

@@ -12,8 +12,9 @@ from typing import Callable, Sequence
 import numpy as np
 
 from ..core.elements import Joint
+from ..core import frames
+from ..core.frames import rotate
 from ..core.kinematics import Kinematics
-from .geometry import rotate
 
 __all__ = ["ExplicitKinematics", "TreeKinematics"]
 
@@ -135,7 +136,7 @@ class TreeKinematics(ExplicitKinematics):
                 if b not in trig:
                     trig[b] = (lib.cos(angles[b]), lib.sin(angles[b]))
                 cb, sb = trig[b]
-                return cb * p[0] - sb * p[1], sb * p[0] + cb * p[1]
+                return frames.turn(cb, sb, p)
 
             pos = {0: (0, 0)}
             for parent, pp, child, pc in order:

@@ -1,32 +1,33 @@
-"""The one geometry kernel of the mechanisms: rotations, rigid-body points, circle intersections.
+"""The one geometry kernel of the mechanisms: rigid-body points, circle intersections (rotations: core).
 
 Every closed-form loop solution in :mod:`balancelab.mechanisms` places its joints with
 these functions; they work on numpy arrays (vectorized over configurations) and, where
 noted, on sympy expressions. Methods that write planar vectors as complex numbers
 convert with :func:`as_complex` and :func:`as_point`; a pose function built on these
-numeric-only tools guards its sympy path with :func:`numeric_only`. Layer: mechanisms;
-imports only the input checks of ``core``.
+numeric-only tools guards its sympy path with :func:`numeric_only`. :func:`pulley_string`
+is the exact path of a string over a round pulley, which both the string-over-pulley
+model (:mod:`balancelab.methods.realize`) and the drawing (:mod:`balancelab.viz.springs`) read. :func:`rotate` is the
+transform kernel's (:mod:`balancelab.core.frames`), re-exported here. Layer: mechanisms;
+imports the input checks and the transform kernel of ``core``.
 """
 from __future__ import annotations
 
 import math
 from types import ModuleType
+from typing import NamedTuple
+
+from numpy.typing import ArrayLike
 
 import numpy as np
 
-from ..core.validation import planar_point
+from ..core.frames import rotate
+from ..core.validation import finite_real, planar_point, real_array
 
 __all__ = ["Point", "rotate", "binary_link_point", "circle_intersection", "as_complex", "as_point",
-           "numeric_only"]
+           "numeric_only", "PulleyString", "pulley_string"]
 
 #: a planar point or vector ``(x, y)`` (m), in type hints
 Point = tuple[float, float]
-
-
-def rotate(lib, angle, point):
-    """Rotate the local ``point`` by ``angle`` with the math library ``lib`` (numpy or sympy)."""
-    c, s = lib.cos(angle), lib.sin(angle)
-    return (c * point[0] - s * point[1], s * point[0] + c * point[1])
 
 
 def binary_link_point(p1, p2, q1, q2, q):
@@ -164,3 +165,82 @@ def numeric_only(lib: ModuleType) -> None:
     if lib is not np:
         raise NotImplementedError("this design's kinematics is numeric only; its energy is checked "
                                   "numerically by balance_report()")
+
+
+# ------------------------------------------------------------------------ a string over a pulley
+class PulleyString(NamedTuple):
+    """Geometry of a string over a pulley (arrays over configurations).
+
+    ``tangent_in`` and ``tangent_out`` (..., 2): where the string meets and leaves the
+    pulley (m); ``wrap`` the wrap angle (rad); ``free`` the straight part from the
+    pulley to the attachment (m); ``passed_over`` = ``radius * wrap + free`` (m).
+    """
+
+    tangent_in: np.ndarray
+    tangent_out: np.ndarray
+    wrap: np.ndarray
+    free: np.ndarray
+    passed_over: np.ndarray
+
+
+def pulley_string(center: ArrayLike, radius: float, point: ArrayLike, spring_direction: ArrayLike = (0.0, 1.0),
+                  turn: int = 1) -> PulleyString:
+    """Exact geometry of a string coming from a spring, over a pulley, to ``point``.
+
+    The string arrives parallel to ``-spring_direction`` (the spring lies on the side
+    ``spring_direction`` of the pulley), touches the pulley at the fixed point where its
+    line is tangent, wraps round it counter-clockwise (``turn = 1``) or clockwise
+    (``turn = -1``) and leaves along the tangent through ``point``.
+
+    Parameters
+    ----------
+    center : (float, float)
+        Pulley centre (m).
+    radius : float
+        Pulley radius (m), >= 0 (0 gives the ideal point anchor).
+    point : array_like, shape (..., 2)
+        Attachment point(s) of the string on the moving link (m); each must be farther
+        than ``radius`` from the centre.
+    spring_direction : (float, float)
+        Direction from the pulley towards the spring (any length).
+    turn : {1, -1}
+        Sense of wrapping.
+
+    Returns
+    -------
+    PulleyString
+
+    Examples
+    --------
+    >>> s = pulley_string((0, 0), 0.01, [0.0, -0.5])
+    >>> round(float(s.passed_over), 6), round(float(s.wrap), 6)
+    (0.5001, 0.020001)
+    """
+    c = complex(*planar_point("center", center))
+    radius = finite_real("radius (m)", radius, nonnegative=True)
+    sd = complex(*planar_point("spring_direction", spring_direction))
+    if sd == 0:
+        raise ValueError("spring_direction must be non-zero")
+    if turn not in (1, -1):
+        raise ValueError(f"turn must be +1 or -1, got {turn!r}")
+    p = real_array("point (attachment on the moving link, m)", point)
+    if p.ndim == 0 or p.shape[-1] != 2:
+        raise ValueError(f"point must have shape (..., 2), got {p.shape}")
+    if not np.all(np.isfinite(p)):
+        raise ValueError("point (attachment on the moving link, m) must be finite")
+    rel = p[..., 0] + 1j * p[..., 1] - c
+    d = np.abs(rel)
+    if np.any(d <= radius):
+        raise ValueError("the attachment point comes within the pulley's radius of its centre")
+    g = -sd / abs(sd)  # travel direction of the incoming string
+    psi_in = np.angle(g) - turn * math.pi / 2
+    free = np.sqrt(d * d - radius * radius)
+    psi_out = np.angle(rel) - turn * np.arctan2(free, radius)
+    wrap = np.mod(turn * (psi_out - psi_in), 2 * math.pi)
+    wrap = np.where(wrap > 2 * math.pi - 1e-12, 0.0, wrap)
+    t_in = c + radius * np.exp(1j * psi_in)
+    t_out = c + radius * np.exp(1j * psi_out)
+    passed = radius * wrap + free
+    tin = np.empty(d.shape + (2,))
+    tin[..., 0], tin[..., 1] = t_in.real, t_in.imag
+    return PulleyString(tin, np.stack([t_out.real, t_out.imag], -1), wrap, free, passed)

@@ -136,15 +136,15 @@ def example(name: str, title: str, *, chapter: int, expected_balanced: bool = Tr
 def examples() -> dict[str, Example]:
     """Every registered example, in course order (see the module docstring).
 
-    Importing the method families registers their examples; this imports every family of
-    :data:`FAMILIES`.
+    Importing the method families registers their examples; ``balancelab.methods`` imports
+    every family of :data:`FAMILIES` before this module can be reached, so the registry is
+    complete whenever this runs (no import here: the families import the registry, never
+    the other way round).
 
     Returns
     -------
     dict
         Short name -> :class:`Example`.
     """
-    from . import deepak, general, lecture, lustig, practice, realize, singh  # noqa: F401  (registers them)
-
     order = sorted(_REGISTRY.values(), key=lambda e: (e.chapter, FAMILIES.index(e.family), e.index))
     return {e.name: e for e in order}

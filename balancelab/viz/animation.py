@@ -34,7 +34,19 @@ from .style import FONT, fit_title
 from .frame import Blitter, check_design, default_q
 from .player import Player, offline_page, player
 
-__all__ = ["Player", "animate", "animate_parameter", "configuration_label", "configuration_path", "player"]
+__all__ = ["Player", "animate", "animate_parameter", "configuration_label", "configuration_path", "player",
+           "WRITER_INTERNALS", "MATPLOTLIB_RANGE"]
+
+#: matplotlib's private names this module still leans on: the HTML writer's frame list and
+#: byte count (filled with compact palette PNGs instead of its own PNGs) and the animation's
+#: per-frame redraw hook (skipped while the writer renders the frame itself). matplotlib has no
+#: public way to hand its JavaScript player ready-made frames; so the supported versions are
+#: pinned (:data:`MATPLOTLIB_RANGE`, the same range as ``pyproject.toml`` and
+#: ``constraints.txt``) and the tests check that these names exist in the installed version.
+#: Without them the writer falls back to matplotlib's own (bigger) frames.
+WRITER_INTERNALS = ("_saved_frames", "_total_bytes", "_bytes_limit", "_hit_limit")
+#: the matplotlib versions this module is tested with (``pyproject.toml``'s requirement)
+MATPLOTLIB_RANGE = ">=3.7,<3.12"
 
 #: Defaults chosen so that ``to_jshtml()`` of a catalog design stays well under 2 MB and a frame
 #: shown 350 px wide (a phone) keeps its smallest text >= 9 px (see :mod:`balancelab.viz.style`).
@@ -65,7 +77,7 @@ def _compact_writer_class():
         source = None
 
         def grab_frame(self, **savefig_kwargs):
-            needed = ("_saved_frames", "_total_bytes", "_bytes_limit", "_hit_limit")
+            needed = WRITER_INTERNALS
             # Animation.save always passes the colours; other options need a real savefig
             plain = set(savefig_kwargs) <= {"facecolor", "edgecolor", "transparent"} and \
                 not savefig_kwargs.get("transparent", False)
@@ -74,7 +86,7 @@ def _compact_writer_class():
                 return super().grab_frame(**savefig_kwargs)
             import base64
 
-            png = _compact_png(self.source._render_frame(), self.colors, self.source._fig.dpi)
+            png = _compact_png(self.source.render_frame(), self.colors, self.source.figure.dpi)
             data = base64.encodebytes(png).decode("ascii")
             self._total_bytes += len(data)
             if self._total_bytes >= self._bytes_limit:
@@ -98,28 +110,32 @@ def _animation_class():
 
         dynamic = None
         _compact_saving = False
-        # FuncAnimation's private attributes this class reads (issue 22, item 8: public API or a pinned range)
-        _fig: Any
-        _func: Any
-        _frames_list: Any
-        _interval: float
-        _blitter: Any
+        #: set by :func:`animate` / :func:`animate_parameter`: the figure, the function that
+        #: draws frame ``i``, the number of frames, the frame rate and how the player repeats
+        figure: Any = None
+        frame_function: Any = None
+        _blitter: Any = None
+        frame_count = 0
+        fps = 24.0
+        default_mode = "loop"
 
-        def _render_frame(self) -> np.ndarray:
+        def render_frame(self) -> np.ndarray:
+            """Pixels (h, w, 3) of the figure as it stands (only the moving artists redrawn)."""
             if self.dynamic is None:
-                self._fig.canvas.draw()
-                return np.asarray(self._fig.canvas.buffer_rgba())[..., :3]
+                self.figure.canvas.draw()
+                return np.asarray(self.figure.canvas.buffer_rgba())[..., :3]
             if getattr(self, "_blitter", None) is None:
-                self._blitter = Blitter(self._fig, self.dynamic)
+                self._blitter = Blitter(self.figure, self.dynamic)
             return self._blitter.render()
 
         def frame_image(self, i: int) -> np.ndarray:
             """Pixels (h, w, 3) of frame ``i``, as embedded by :meth:`to_jshtml`."""
-            self._draw_was_started = True  # rendered by hand: no "deleted unrendered" warning
-            self._func(self._frames_list[i])
-            return self._render_frame()
+            if not 0 <= i < self.frame_count:
+                raise IndexError(f"frame {i} of an animation of {self.frame_count} frames")
+            self.frame_function(i)
+            return self.render_frame()
 
-        def _post_draw(self, framedata, blit):
+        def _post_draw(self, framedata, blit):     # one of WRITER_INTERNALS' neighbours: see the module
             if self._compact_saving:
                 return  # the writer renders the frame itself, once
             super()._post_draw(framedata, blit)  # type: ignore[misc]  # private in matplotlib's stubs
@@ -129,9 +145,9 @@ def _animation_class():
             if not embed_frames:
                 return super().to_jshtml(fps, embed_frames, default_mode)
             if fps is None:
-                fps = 1000.0 / self._interval
+                fps = self.fps
             if default_mode is None:
-                default_mode = "loop" if getattr(self, "_repeat", False) else "once"
+                default_mode = self.default_mode
             key = (fps, default_mode)
             cache = self.__dict__.setdefault("_balancelab_html", {})
             if key not in cache:
@@ -156,6 +172,23 @@ def _animation_class():
             return self.to_jshtml()
 
     return BalanceAnimation
+
+
+def _start(fig, frame: Callable, count: int, fps: float, laid_out: bool = False):
+    """The animation of ``count`` frames drawn by ``frame(i)``, its figure laid out once.
+
+    An animation starts at its figure's first draw (matplotlib draws frame 0 then): that draw is
+    made here (the one that freezes the layout, or one more when ``laid_out``), so no later render
+    restarts frame 0 half-way, and an animation dropped unrendered is not reported as never drawn.
+    """
+    anim = _animation_class()(fig, frame, frames=count, interval=1000.0 / fps, blit=False,
+                              repeat=True, cache_frame_data=False)
+    anim.figure, anim.frame_function, anim.frame_count, anim.fps = fig, frame, count, fps
+    if laid_out:
+        fig.canvas.draw()
+    else:
+        _freeze_layout(fig)
+    return anim
 
 
 def _freeze_layout(fig) -> None:
@@ -299,14 +332,7 @@ def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, fig
             energy.set_q(path[i])
         return drawing.artists + ([energy.marker] if energy is not None else [])
 
-    _freeze_layout(fig)
-    anim = _animation_class()(fig, frame, frames=len(path), interval=1000.0 / fps, blit=False,
-                              repeat=True, cache_frame_data=False)
-    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
-    # and do not warn when such an animation is dropped without being rendered
-    fig.canvas.mpl_disconnect(anim._first_draw_id)
-    anim._draw_was_started = True
-    anim._frames_list = list(range(len(path)))
+    anim = _start(fig, frame, len(path), fps)
     anim.dynamic = lambda: drawing.artists + ([energy.marker] if energy is not None else [])
     anim.path = path
     anim.drawing = drawing
@@ -448,13 +474,7 @@ def animate_parameter(factory: Callable, name: str, values: Sequence[float], q=N
                        for d, h in zip(designs, heads)), key=len), y=1.0)
     _freeze_layout(fig)
     frame(0)
-    anim = _animation_class()(fig, frame, frames=len(values), interval=1000.0 / fps, blit=False,
-                              repeat=True, cache_frame_data=False)
-    # an off-screen figure is never shown by a GUI: do not let its first draw restart frame 0,
-    # and do not warn when such an animation is dropped without being rendered
-    fig.canvas.mpl_disconnect(anim._first_draw_id)
-    anim._draw_was_started = True
-    anim._frames_list = list(range(len(values)))
+    anim = _start(fig, frame, len(values), fps, laid_out=True)
     if energy is not None and first.dof == 1:  # energy is shown
         anim.dynamic = lambda: (drawing.artists + [note, title] + energy.artists
                                 + [energy.ax.title])

@@ -216,5 +216,6 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
         raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
     html = offline_page(anim.to_jshtml(default_mode=default_mode))
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
-    plt.close(anim._fig)  # type: ignore[attr-defined]  # matplotlib keeps the figure only under this private name
+    fig = getattr(anim, "figure", None)      # balancelab's animations name their figure
+    plt.close(fig if fig is not None else anim._fig)  # type: ignore[attr-defined]  # any other matplotlib animation: its only name
     return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames)), frames)

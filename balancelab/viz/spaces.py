@@ -8,7 +8,8 @@
 * :func:`cognates_plot`: several linkages and the curves one named point of each traces.
 
 Every number shown is read from the designs (their energies, springs and points).
-Layer: viz; imports ``balancelab.core``, ``balancelab.methods.singh``.
+Layer: viz; imports ``balancelab.core``, ``balancelab.methods.singh`` (the levers and their
+energies: :func:`balancelab.singh.lacoste_energies`).
 """
 from __future__ import annotations
 
@@ -18,6 +19,7 @@ import numpy as np
 
 from ..core.design import Design, UnreachableConfiguration
 from ..core.validation import finite_real
+from ..methods.singh import lacoste_energies
 from .drawing import Drawing, draw
 from .style import FONT
 from .frame import PALETTE, as_config, check_design, count, new_axes, range_grid, tex_label
@@ -29,23 +31,6 @@ _COLOURS = [PALETTE[c] for c in ("blue", "vermillion", "green", "orange", "purpl
 
 
 # ------------------------------------------------------------------ lever valley
-def _lever_energies(weight: float, length: float, a_x, b_y) -> np.ndarray:
-    """Energy (J) of the LaCoste lever built at every ``(a_x, b_y)``, averaged over its range.
-
-    The lever is balanced, so the energy of each design is the same at every
-    configuration; the mean over a few configurations is that constant.
-    """
-    from ..methods.singh import lacoste_lever
-
-    a_x, b_y = np.broadcast_arrays(np.asarray(a_x, dtype=float), np.asarray(b_y, dtype=float))
-    out = np.empty(a_x.shape)
-    q = np.linspace(-np.pi, np.pi, 4, endpoint=False)[:, None]
-    for idx in np.ndindex(a_x.shape):
-        design = lacoste_lever(weight, length, float(a_x[idx]), float(b_y[idx]))
-        out[idx] = float(np.mean(design.potential_energy(q).total))
-    return out
-
-
 def _valley_ranges(a_range, b_range) -> list:
     rngs = []
     for name, r in (("a_range", a_range), ("b_range", b_range)):
@@ -102,9 +87,9 @@ def lever_valley(weight: float = 10.0, length: float = 0.5, a_range=(0.05, 1.0),
         raise ValueError(f"kind must be 'contour' or 'surface', got {kind!r}")
     n = count("n", n)
     A, B = np.meshgrid(np.linspace(rngs[0][0], rngs[0][1], n), np.linspace(rngs[1][0], rngs[1][1], n))
-    PE = _lever_energies(W, length, A, B)
+    PE = lacoste_energies(W, length, A, B)
     v = np.linspace(max(rngs[0][0], rngs[1][0]), min(rngs[0][1], rngs[1][1]), 25)
-    pe_v = _lever_energies(W, length, v, v)
+    pe_v = lacoste_energies(W, length, v, v)
     label = f"valley $a_x = b_y$: PE = W l = {float(np.mean(pe_v)):.3g} J"
     if kind == "surface":
         ax = _valley_surface(ax, A, B, PE, v, pe_v, label)

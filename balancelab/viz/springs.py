@@ -2,31 +2,33 @@
 
 The shape follows the spring's ``realization``. A spring realized by a pulley
 (``spring.pulley``, a :class:`balancelab.core.elements.Pulley`) is drawn from the same
-object the exact string model reads (:func:`balancelab.methods.realize.pulley_string`):
+object the exact string model reads (:func:`balancelab.mechanisms.geometry.pulley_string`):
 the string leaves the attachment on the tangent to the pulley, wraps round it in the
 pulley's sense and runs on to a coil on the pulley's ``spring_direction`` side, so the
 picture cannot put the spring where the model does not.
 
-Layer: viz; imports ``balancelab.core`` and ``balancelab.methods.realize``.
+Layer: viz; imports ``balancelab.core`` and ``balancelab.mechanisms``.
 """
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
-from ..core.elements import Pulley, Spring
-from ..methods.realize import NoncircularProfile, pulley_string
+from ..core.elements import CablePath, Pulley, Spring
+from ..mechanisms.geometry import pulley_string
 from .frame import STYLE
 
 __all__ = ["cable_angle", "cable_coil_end", "cable_coil_ends", "cable_path", "coil_path", "gas_path", "profile_outline",
            "pulley_coil_length", "pulley_drawn_radius", "pulley_path", "spring_path", "spring_style"]
 
 
-def _profile(spring: Spring) -> NoncircularProfile:
-    """The non-circular pulley of a cable spring, or a TypeError naming the spring."""
+def _profile(spring: Spring) -> Any:
+    """The non-circular pulley of a cable spring (a ``realize.NoncircularProfile``: viz does not import
+    realize), or a TypeError naming the spring."""
     prof = spring.cable
-    if not isinstance(prof, NoncircularProfile):
+    if not isinstance(prof, CablePath) or not hasattr(prof, "local_points"):
         raise TypeError(f"spring {spring.name or spring}: its realization must be a NoncircularProfile to be "
                         f"drawn as a cable, got {type(spring.realization).__name__}")
     return prof

@@ -435,7 +435,7 @@ def as_mapping(answer, keys, what: str = "the design") -> dict:
     >>> as_mapping({"k": 300.0}, ("k", "a"), "your spring")
     Traceback (most recent call last):
     ...
-    balancelab.course.check.core.AnswerError: Your spring is missing 'a'.
+    balancelab.core.errors.AnswerError: Your spring is missing 'a'.
     """
     if not isinstance(answer, dict):
         layout = ", ".join(repr(k) + ": ..." for k in keys)

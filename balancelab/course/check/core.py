@@ -11,6 +11,7 @@ import functools
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+from ...core.errors import AnswerError
 from .data import Unreadable, decode_answer, encode_answer
 from .derive import shortcuts
 
@@ -62,29 +63,6 @@ class Verdict:
         return text
 
     __repr__ = __str__
-
-
-class AnswerError(ValueError):
-    """A malformed answer; its message is shown to the student as the verdict.
-
-    Parameters
-    ----------
-    message : str
-        What is wrong with the answer (shown as the verdict's message).
-    hint : str
-        How to write it instead (shown as the verdict's hint); the task's ``expects``
-        text when empty.
-
-    Examples
-    --------
-    >>> e = AnswerError("k must be positive.", "A spring rate is > 0 N/m.")
-    >>> str(e), e.hint
-    ('k must be positive.', 'A spring rate is > 0 N/m.')
-    """
-
-    def __init__(self, message: str, hint: str = "") -> None:
-        super().__init__(message)
-        self.hint = hint
 
 
 @dataclass(frozen=True)
@@ -303,7 +281,7 @@ def task_numbers(task_id: str, student: str | None = None) -> dict:
     return dict(_drawn(t.id, student))
 
 
-def student_rng(key: str, student: str):
+def student_rng(key: str, student: str) -> Any:
     """The random generator of one student for one key: the seeding of every personal number.
 
     Parameters

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...core.elements import G
+from ...core.frames import turn_back
 from ...core.kinematics import body_to_world
 from ...core.report import reference_point
 
@@ -80,11 +81,10 @@ def _lifted_columns(poses, block):
     with ``W = k p_a p_b^T``: linear in the nine unknowns, which relax the rank-one ``W``."""
     (ba, _), (bb, _) = block.ends
     d = poses[:, ba, :2] - poses[:, bb, :2]
-    ca, sa = np.cos(poses[:, ba, 2]), np.sin(poses[:, ba, 2])
-    cb, sb = np.cos(poses[:, bb, 2]), np.sin(poses[:, bb, 2])
+    da = turn_back(np.cos(poses[:, ba, 2]), np.sin(poses[:, ba, 2]), (d[:, 0], d[:, 1]))   # R_a^T d
+    db = turn_back(np.cos(poses[:, bb, 2]), np.sin(poses[:, bb, 2]), (d[:, 0], d[:, 1]))   # R_b^T d
     c, s = np.cos(poses[:, bb, 2] - poses[:, ba, 2]), np.sin(poses[:, bb, 2] - poses[:, ba, 2])
-    return [0.5 * (d * d).sum(-1), ca * d[:, 0] + sa * d[:, 1], -sa * d[:, 0] + ca * d[:, 1],
-            -(cb * d[:, 0] + sb * d[:, 1]), -(-sb * d[:, 0] + cb * d[:, 1]), -c, s, -s, -c]
+    return [0.5 * (d * d).sum(-1), da[0], da[1], -db[0], -db[1], -c, s, -s, -c]
 
 
 def _spring_columns(poses, block):
@@ -97,8 +97,8 @@ def _spring_columns(poses, block):
         return [0.5 * (d * d).sum(-1)]
     (bf, _), (bx, px) = (block.ends[1], block.ends[0]) if block.free == 1 else (block.ends[0], block.ends[1])
     u = _world(poses, bx, px) - poses[:, bf, :2]
-    c, s = np.cos(poses[:, bf, 2]), np.sin(poses[:, bf, 2])
-    return [0.5 * (u * u).sum(-1), -(c * u[:, 0] + s * u[:, 1]), -(-s * u[:, 0] + c * u[:, 1])]
+    ux, uy = turn_back(np.cos(poses[:, bf, 2]), np.sin(poses[:, bf, 2]), (u[:, 0], u[:, 1]))   # R_c^T u
+    return [0.5 * (u * u).sum(-1), -ux, -uy]
 
 
 def _mass_columns(poses, block):

@@ -23,23 +23,24 @@ are global coordinates. Configuration coordinates ``q`` are **absolute** link an
 rows in its ``angle_matrix``. Spring ``j`` goes from its proximal body (``A_j``) to its
 distal body (``B_j``); a spring given the other way round is turned around.
 
+The chain's kinematics is :mod:`balancelab.mechanisms.chain`'s serial chain
+(:func:`chain_kinematics` is :func:`balancelab.mechanisms.serial_chain_kinematics` under the
+name this family has always used); this module adds the paper's notation and its design.
+
 Parameter names follow the paper with the subscripts written flat: ``L2, m2, sx2, sy2``
 for link 2 (body 1), ``k1, ax1, ay1, bx1, by1`` for spring 1, ``g`` for gravity.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Mapping, Sequence
 
-import numpy as np
 
 from ...core.design import Design
-from ...core.elements import G, Joint, Spring, SymbolicParts, gravity_load
-from ...core.kinematics import Kinematics
+from ...core.elements import G, Spring, SymbolicParts, gravity_load
 from ...core.validation import body_index, finite_reals, planar_points, positive_int
-from ...mechanisms.base import TreeKinematics
-from ...mechanisms.geometry import rotate
+from ...mechanisms.chain import SymbolicChainKinematics, serial_chain_joints
+from ...mechanisms.chain import serial_chain_kinematics as chain_kinematics
 
 __all__ = ["REFERENCE", "SerialChain", "chain_kinematics", "chain_parameter_names", "check_topology"]
 
@@ -231,7 +232,7 @@ class SerialChain:
         springs = [s if s.name else Spring(s.k, 0.0, s.a, s.b, name=f"k{j}", realization=s.realization)
                    for j, s in enumerate(self.springs, start=1)]
         sym = _symbolic_parts(self) if symbolic else None
-        return Design(name, bodies, _chain_joints(self.lengths), chain_kinematics(self.lengths), loads,
+        return Design(name, bodies, serial_chain_joints(self.lengths), chain_kinematics(self.lengths), loads,
                       springs, symbolic=sym, labels=self._labels(), parameters=self.values(),
                       reference=reference)
 
@@ -245,43 +246,6 @@ class SerialChain:
             labels[f"A{j}"] = (s.a.body, s.a.point)
             labels[f"B{j}"] = (s.b.body, s.b.point)
         return labels
-
-
-def _chain_joints(lengths) -> list:
-    joints = [Joint(0, (0.0, 0.0), 1, (0.0, 0.0))]
-    for i, L in enumerate(lengths[:-1], start=1):
-        joints.append(Joint(i, (float(L), 0.0), i + 1, (0.0, 0.0)))
-    return joints
-
-
-def chain_kinematics(lengths: Sequence[float]) -> TreeKinematics:
-    """Kinematics of a serial chain with absolute link angles as coordinates.
-
-    Parameters
-    ----------
-    lengths : sequence of float
-        Link lengths (m), one per moving link, each > 0.
-
-    Returns
-    -------
-    TreeKinematics
-        Coordinates ``theta_1 .. theta_n``: the **absolute** angle (rad) of each moving
-        link from the global x-axis, each in ``[-pi, pi]``; ``angle_matrix`` has
-        identity rows.
-
-    Examples
-    --------
-    >>> k = chain_kinematics((0.3, 0.2))
-    >>> k.names
-    ('theta_1', 'theta_2')
-    >>> k.poses([0.0, 1.5707963267948966])[0][2].round(6).tolist()
-    [0.3, 0.0, 1.570796]
-    """
-    lengths = finite_reals("lengths (m)", lengths, None, positive=True)
-    n = len(lengths)
-    A = np.vstack([np.zeros((1, n)), np.eye(n)])
-    names = tuple(f"theta_{i}" for i in range(1, n + 1))
-    return TreeKinematics(n + 1, _chain_joints(lengths), A, names, [(-math.pi, math.pi)] * n)
 
 
 def check_topology(n: int, topology) -> tuple[int, tuple]:
@@ -363,36 +327,6 @@ def chain_parameter_names(n: int, topology) -> tuple[str, ...]:
 
 
 # ------------------------------------------------------------ the symbolic design parts
-class _SymbolicChainKinematics(Kinematics):
-    """The chain's kinematics with the link lengths as the paper's symbols ``L2, L3, ...``.
-
-    Used only for the design's symbolic energy: body ``i``'s origin is
-    ``J_i = sum_{u <= i} L_u q_u`` (eq. 2b) with absolute angles ``theta_1..theta_n``.
-    """
-
-    def __init__(self, numeric: TreeKinematics, lengths_sym):
-        self.nbodies = numeric.nbodies
-        self.names = numeric.names
-        self.q_range = numeric.q_range
-        self._numeric = numeric
-        self._L = tuple(lengths_sym)
-
-    def poses(self, q):
-        return self._numeric.poses(q)
-
-    def symbolic_point(self, body, point, syms):
-        import sympy as sp
-
-        x, y = sp.S.Zero, sp.S.Zero
-        for i in range(1, body):
-            x += self._L[i - 1] * sp.cos(syms[i - 1])
-            y += self._L[i - 1] * sp.sin(syms[i - 1])
-        if body == 0:
-            return (x + point[0], y + point[1])
-        px, py = rotate(sp, syms[body - 1], point)
-        return (x + px, y + py)
-
-
 def _symbolic_parts(chain: SerialChain) -> SymbolicParts:
     """The chain's loads and springs in the paper's symbols (real sympy symbols by name)."""
     import sympy as sp
@@ -405,6 +339,6 @@ def _symbolic_parts(chain: SerialChain) -> SymbolicParts:
                      (bb, (syms[f"bx{j}"], syms[f"by{j}"])))
                     for j, (ba, bb) in enumerate(chain.topology, start=1))
     values = {syms[k]: v for k, v in chain.values().items()}
-    kin = _SymbolicChainKinematics(chain_kinematics(chain.lengths),
-                                   [syms[f"L{u}"] for u in range(2, chain.n + 2)])
+    kin = SymbolicChainKinematics(chain_kinematics(chain.lengths),
+                                  [syms[f"L{u}"] for u in range(2, chain.n + 2)])
     return SymbolicParts(loads, springs, values, kinematics=kin)

@@ -37,6 +37,8 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from ...core.design import Design
+from ...core.frames import turn_back
+from ...core.kinematics import central_difference
 from ...core.validation import finite_real, positive_int
 from ..realize.profile import NoncircularProfile
 
@@ -90,11 +92,11 @@ def _spring_basis(P, a: int, b: int) -> np.ndarray:
     ``|d|^2 = |D0 + R_b p_b - R_a p_a|^2`` with ``D0 = X_b - X_a``; see :func:`_spring_coefficients`.
     """
     Xa, Xb = P[:, a, :2], P[:, b, :2]
-    ca, sa, cb, sb = np.cos(P[:, a, 2]), np.sin(P[:, a, 2]), np.cos(P[:, b, 2]), np.sin(P[:, b, 2])
     D = Xb - Xa
+    Da = turn_back(np.cos(P[:, a, 2]), np.sin(P[:, a, 2]), (D[:, 0], D[:, 1]))     # R_a^T D
+    Db = turn_back(np.cos(P[:, b, 2]), np.sin(P[:, b, 2]), (D[:, 0], D[:, 1]))     # R_b^T D
     dl = P[:, a, 2] - P[:, b, 2]
-    return np.stack([np.sum(D * D, -1), D[:, 0] * cb + D[:, 1] * sb, -D[:, 0] * sb + D[:, 1] * cb,
-                     D[:, 0] * ca + D[:, 1] * sa, -D[:, 0] * sa + D[:, 1] * ca, np.cos(dl), np.sin(dl)])
+    return np.stack([np.sum(D * D, -1), Db[0], Db[1], Da[0], Da[1], np.cos(dl), np.sin(dl)])
 
 
 def _spring_coefficients(pa, pb) -> tuple[np.ndarray, np.ndarray]:
@@ -107,9 +109,9 @@ def _spring_coefficients(pa, pb) -> tuple[np.ndarray, np.ndarray]:
 
 def _load_basis(P, body: int, force) -> np.ndarray:
     """``(3, m)``: the energy ``-f . (X + R p)`` is ``[1, p_x, p_y]`` times these."""
-    c, s = np.cos(P[:, body, 2]), np.sin(P[:, body, 2])
     fx, fy = force
-    return np.stack([-(fx * P[:, body, 0] + fy * P[:, body, 1]), -(fx * c + fy * s), -(-fx * s + fy * c)])
+    local = turn_back(np.cos(P[:, body, 2]), np.sin(P[:, body, 2]), (fx, fy))      # R^T f
+    return np.stack([-(fx * P[:, body, 0] + fy * P[:, body, 1]), -local[0], -local[1]])
 
 
 def _basis_and_derivative(design: Design, q, basis, h: float = 1e-6):
@@ -118,17 +120,8 @@ def _basis_and_derivative(design: Design, q, basis, h: float = 1e-6):
     A one-sided difference is used where a neighbour is unreachable (none where both are).
     """
     kin = design.kinematics
-    P = design.poses(q)
-    B = basis(P)
-    dB = np.empty(B.shape + (design.dof,))
-    for i in range(design.dof):
-        e = np.zeros(design.dof)
-        e[i] = h
-        pp, okp = kin.poses(q + e)
-        pm, okm = kin.poses(q - e)
-        Bp, Bm = basis(np.where(okp[:, None, None], pp, P)), basis(np.where(okm[:, None, None], pm, P))
-        dB[..., i] = (Bp - Bm) / (h * np.maximum(okp.astype(float) + okm.astype(float), 1.0))
-    return B, dB
+    B = basis(design.poses(q))
+    return B, central_difference(lambda x: basis(kin.poses(x)[0]), kin.reachable, q, h)
 
 
 def _params(design: Design, values: dict, N: int) -> dict:

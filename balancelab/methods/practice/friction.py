@@ -30,6 +30,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import gravity_load
+from ...core.frames import turn_rate
 from ...core.validation import body_index, finite_real, planar_point
 from . import forces  # noqa: F401 (the doctests use the module by name)
 from .forces import configurations, generalized_force, joint_loads, joint_tree, pose_jacobian
@@ -238,9 +239,9 @@ def hand_force(design: Design, friction, body: int, point, q=None, n: int = 61,
         child, parent = (jt.body_j, jt.body_i) if jt.body_j in part else (jt.body_i, jt.body_j)
         rate = (J[:, child, 2, :] - J[:, parent, 2, :]) @ v
         fric += tau[j] * np.abs(rate)
-    c, s = np.cos(P[:, body, 2]), np.sin(P[:, body, 2])
-    dx = J[:, body, 0, :] + (-s * point[0] - c * point[1])[:, None] * J[:, body, 2, :]
-    dy = J[:, body, 1, :] + (c * point[0] - s * point[1])[:, None] * J[:, body, 2, :]
+    rx, ry = turn_rate(np.cos(P[:, body, 2]), np.sin(P[:, body, 2]), point)     # dR/dangle p
+    dx = J[:, body, 0, :] + rx[:, None] * J[:, body, 2, :]
+    dy = J[:, body, 1, :] + ry[:, None] * J[:, body, 2, :]
     speed = np.hypot(dx @ v, dy @ v)
     if np.any(speed <= 1e-12):
         raise ValueError("the hand's point does not move along this direction somewhere in the range")

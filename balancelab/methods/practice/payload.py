@@ -28,6 +28,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import Spring, gravity_load
+from ...core.frames import turn_back
 from ...core.validation import body_index
 from .forces import configurations
 
@@ -65,9 +66,9 @@ def _anchor_columns(design: Design, q, idx):
             raise ValueError(f"spring {s.name or i} has free length {s.free_length} m: moving an anchor "
                              "re-balances exactly only ZFL springs")
         XA = poses[:, s.a.body, :2]
-        c, sn = np.cos(poses[:, s.a.body, 2]), np.sin(poses[:, s.a.body, 2])
         rel = XA - design.world_points(q, [s.b])[:, 0]
-        cols += [s.k * (c * rel[:, 0] + sn * rel[:, 1]), s.k * (-sn * rel[:, 0] + c * rel[:, 1])]
+        lx, ly = turn_back(np.cos(poses[:, s.a.body, 2]), np.sin(poses[:, s.a.body, 2]), (rel[:, 0], rel[:, 1]))
+        cols += [s.k * lx, s.k * ly]
         springs[i] = Spring(s.k, 0.0, (s.a.body, (0.0, 0.0)), s.b, name=s.name, realization=s.realization)
     return cols, design.replace(springs=springs)
 

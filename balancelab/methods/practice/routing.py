@@ -2,7 +2,7 @@
 
 A :class:`~balancelab.core.elements.Pulley` fixes where the real spring lies
 (``spring_direction``) and the sense in which the string wraps (``turn``). The exact
-model (:func:`balancelab.methods.realize.pulley_string`) measures the wrap angle
+model (:func:`balancelab.mechanisms.geometry.pulley_string`) measures the wrap angle
 ``phi`` in ``[0, 2 pi)``: the string comes in along a fixed line, wraps by ``phi`` and
 leaves towards the attachment. A real string can only bend round the pulley one way.
 When the attachment swings to the side where the string would have to bend the other
@@ -25,7 +25,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import Pulley
 from ...core.validation import finite_real, positive_int
-from ..realize import pulley_string
+from ...mechanisms.geometry import pulley_string
 from .forces import configurations
 
 __all__ = ["ROUTINGS", "string_wrap", "stays_wrapped", "pulley_routing"]

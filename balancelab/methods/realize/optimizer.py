@@ -13,6 +13,7 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import G, Load, Spring
 from ...core.errors import ApproximationError
+from ...core.frames import turn
 from ...core.validation import finite_real, finite_reals, planar_points, positive_int
 from ...mechanisms.lever import lever_design
 from ..registry import register
@@ -22,7 +23,7 @@ __all__ = ["ApproximationError", "approximate_lever"]
 def _lever_torque(x, mass, r, l0, th):
     bx, by, ax, ay, k = x
     c, s = np.cos(th), np.sin(th)
-    Ax, Ay = c * ax - s * ay, s * ax + c * ay
+    Ax, Ay = turn(c, s, (ax, ay))
     dAx, dAy = -Ay, Ax
     dx, dy = Ax - bx, Ay - by
     d = np.hypot(dx, dy)
@@ -33,7 +34,7 @@ def _lever_torque(x, mass, r, l0, th):
 def _lever_energy(x, mass, r, l0, th):
     bx, by, ax, ay, k = x
     c, s = np.cos(th), np.sin(th)
-    Ax, Ay = c * ax - s * ay, s * ax + c * ay
+    Ax, Ay = turn(c, s, (ax, ay))
     d = np.hypot(Ax - bx, Ay - by)
     return mass * G * r * s + 0.5 * k * (d - l0) ** 2
 

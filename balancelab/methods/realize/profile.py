@@ -31,16 +31,14 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ...core.elements import CablePath
+from ...core.errors import ProfileError
+from ...core.frames import place, turn
 
 __all__ = ["CableGeometry", "NoncircularProfile", "ProfileError"]
 
 #: how far (in the profile's parameter, 1 = half the range) the tangent point may leave the
 #: profile before the model refuses: the step of a numerical derivative at the range's ends
 _EDGE = 1e-5
-
-
-class ProfileError(ValueError):
-    """Raised when no wrappable profile exists, or when the cable leaves the profile."""
 
 
 class CableGeometry(NamedTuple):
@@ -172,8 +170,8 @@ class NoncircularProfile(CablePath):
         x = np.asarray(x, dtype=float)
         h, psi = self.support(x)
         hp = self._h_psi(x)
-        c, s = np.cos(psi), np.sin(psi)
-        return np.stack([h * c - hp * s, self.turn * (h * s + hp * c)], -1)
+        px, py = turn(np.cos(psi), np.sin(psi), (h, hp))     # h along the normal, h' along the tangent
+        return np.stack([px, self.turn * py], -1)
 
     def normals(self, x) -> np.ndarray:
         """Outward unit normals of the profile in the link's frame, shape (..., 2)."""
@@ -290,8 +288,7 @@ class NoncircularProfile(CablePath):
         theta = np.asarray(theta, dtype=float)[..., None]
         p = np.asarray(points, dtype=float)
         c, s = np.cos(theta[..., 0]), np.sin(theta[..., 0])
-        return np.stack([self.pivot[0] + c * p[..., 0] - s * p[..., 1],
-                         self.pivot[1] + s * p[..., 0] + c * p[..., 1]], -1)
+        return np.stack(place(self.pivot[0], self.pivot[1], c, s, (p[..., 0], p[..., 1])), -1)
 
     def length(self, pose_a, pose_b) -> np.ndarray:
         """The spring's length (m): the cable's path from the eyelet minus the cable's length.

@@ -22,6 +22,7 @@ import math  # noqa: F401 (the doctests use it)
 import numpy as np
 
 from ...core.design import Design
+from ...core.frames import rotate
 from .profile import NoncircularProfile
 
 __all__ = ["polyline_path", "polyline_variation"]
@@ -70,8 +71,7 @@ def polyline_path(points, theta, anchor, clamp, turn: int) -> np.ndarray:
     out = np.empty(len(theta))
     for start in range(0, len(theta), 32):          # 32 angles at a time: (32, n, 2) arrays
         t = theta[start:start + 32, None]
-        c, s = np.cos(t), np.sin(t)
-        world = np.stack([c * pts[:, 0] - s * pts[:, 1], s * pts[:, 0] + c * pts[:, 1]], -1)
+        world = np.stack(rotate(np, t, (pts[:, 0], pts[:, 1])), -1)
         rel = world - np.asarray(anchor, dtype=float)
         # each vertex's direction from the eyelet, as an angle from the first one's (a convex part seen
         # from outside spans less than 180°); the cable touches where the whole part lies on the wrap's

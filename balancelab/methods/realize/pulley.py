@@ -9,7 +9,8 @@ its end comes down along a fixed line, wraps round a pulley of radius ``rho`` ce
 the virtual anchor and leaves it on the tangent towards the attachment ``C`` on the
 moving link. The spring carries that geometry: ``Spring(..., realization=Pulley(rho,
 spring_direction, turn))`` (:class:`balancelab.core.elements.Pulley`), read both by the
-exact model here and by the drawing. The string's passed-over length (from where it
+exact model here and by the drawing; the string's geometry (:func:`pulley_string`) is
+:mod:`balancelab.mechanisms.geometry`'s, re-exported here. The string's passed-over length (from where it
 first touches the pulley to ``C``) is ``lambda = rho phi + sqrt(d^2 - rho^2)``, with ``d = |C - centre|`` and ``phi``
 the wrap angle, which changes with the configuration. The spring's extension equals
 ``lambda`` when the arrangement is calibrated so that the passed-over length is zero
@@ -26,90 +27,13 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import G, Load, Pulley, Spring
-from ...core.validation import finite_real, instance_of, planar_point, positive_int, real_array
+from ...core.validation import finite_real, instance_of, positive_int, real_array
+from ...mechanisms.geometry import PulleyString, pulley_string
 from ...mechanisms.lever import lever_design
 from ..registry import register
 
 __all__ = ["PulleyString", "pulley_string", "pulley_lever", "pulley_energy", "PulleyError",
            "pulley_balance_error", "pulley_error_curve"]
-
-
-# ------------------------------------------------------------------------ pulley
-class PulleyString(NamedTuple):
-    """Geometry of a string over a pulley (arrays over configurations).
-
-    ``tangent_in`` and ``tangent_out`` (..., 2): where the string meets and leaves the
-    pulley (m); ``wrap`` the wrap angle (rad); ``free`` the straight part from the
-    pulley to the attachment (m); ``passed_over`` = ``radius * wrap + free`` (m).
-    """
-
-    tangent_in: np.ndarray
-    tangent_out: np.ndarray
-    wrap: np.ndarray
-    free: np.ndarray
-    passed_over: np.ndarray
-
-
-def pulley_string(center, radius: float, point, spring_direction=(0.0, 1.0), turn: int = 1) -> PulleyString:
-    """Exact geometry of a string coming from a spring, over a pulley, to ``point``.
-
-    The string arrives parallel to ``-spring_direction`` (the spring lies on the side
-    ``spring_direction`` of the pulley), touches the pulley at the fixed point where its
-    line is tangent, wraps round it counter-clockwise (``turn = 1``) or clockwise
-    (``turn = -1``) and leaves along the tangent through ``point``.
-
-    Parameters
-    ----------
-    center : (float, float)
-        Pulley centre (m).
-    radius : float
-        Pulley radius (m), >= 0 (0 gives the ideal point anchor).
-    point : array_like, shape (..., 2)
-        Attachment point(s) of the string on the moving link (m); each must be farther
-        than ``radius`` from the centre.
-    spring_direction : (float, float)
-        Direction from the pulley towards the spring (any length).
-    turn : {1, -1}
-        Sense of wrapping.
-
-    Returns
-    -------
-    PulleyString
-
-    Examples
-    --------
-    >>> s = pulley_string((0, 0), 0.01, [0.0, -0.5])
-    >>> round(float(s.passed_over), 6), round(float(s.wrap), 6)
-    (0.5001, 0.020001)
-    """
-    c = complex(*planar_point("center", center))
-    radius = finite_real("radius (m)", radius, nonnegative=True)
-    sd = complex(*planar_point("spring_direction", spring_direction))
-    if sd == 0:
-        raise ValueError("spring_direction must be non-zero")
-    if turn not in (1, -1):
-        raise ValueError(f"turn must be +1 or -1, got {turn!r}")
-    p = real_array("point (attachment on the moving link, m)", point)
-    if p.ndim == 0 or p.shape[-1] != 2:
-        raise ValueError(f"point must have shape (..., 2), got {p.shape}")
-    if not np.all(np.isfinite(p)):
-        raise ValueError("point (attachment on the moving link, m) must be finite")
-    rel = p[..., 0] + 1j * p[..., 1] - c
-    d = np.abs(rel)
-    if np.any(d <= radius):
-        raise ValueError("the attachment point comes within the pulley's radius of its centre")
-    g = -sd / abs(sd)  # travel direction of the incoming string
-    psi_in = np.angle(g) - turn * math.pi / 2
-    free = np.sqrt(d * d - radius * radius)
-    psi_out = np.angle(rel) - turn * np.arctan2(free, radius)
-    wrap = np.mod(turn * (psi_out - psi_in), 2 * math.pi)
-    wrap = np.where(wrap > 2 * math.pi - 1e-12, 0.0, wrap)
-    t_in = c + radius * np.exp(1j * psi_in)
-    t_out = c + radius * np.exp(1j * psi_out)
-    passed = radius * wrap + free
-    tin = np.empty(d.shape + (2,))
-    tin[..., 0], tin[..., 1] = t_in.real, t_in.imag
-    return PulleyString(tin, np.stack([t_out.real, t_out.imag], -1), wrap, free, passed)
 
 
 def pulley_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: float = 0.2,

@@ -5,7 +5,7 @@ three (or two) ZFL springs from the ground; the four-bar of Sec. III.A; the
 Peaucellier-Lipkin writing board (Sec. III.B); the scissors lift (Sec. IV).
 """
 # imported in course order: the registry orders a family's examples by module import
-from .lever import generalized_lever, lacoste_lever, min_preload_lever
+from .lever import generalized_lever, lacoste_energies, lacoste_lever, min_preload_lever
 from .counting import ChainConditions, chain_conditions, chain_solution_point, conditions_rank, design_point
 from .serial import (free_choice_count, max_work_angle, serial_2r_min_preload, serial_2r_simplified,
                      serial_2r_two_springs)
@@ -13,7 +13,7 @@ from .fourbar import singh_fourbar
 from .scissors import scissors_lift
 from .peaucellier import peaucellier_board
 
-__all__ = ["singh_fourbar", "generalized_lever", "lacoste_lever", "min_preload_lever", "peaucellier_board",
+__all__ = ["singh_fourbar", "generalized_lever", "lacoste_energies", "lacoste_lever", "min_preload_lever", "peaucellier_board",
            "scissors_lift", "free_choice_count", "max_work_angle", "serial_2r_min_preload",
            "serial_2r_simplified", "serial_2r_two_springs", "ChainConditions", "chain_conditions",
            "chain_solution_point", "conditions_rank", "design_point"]

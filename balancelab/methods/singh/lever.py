@@ -1,15 +1,18 @@
 """Singh & Ananthasuresh: LaCoste's lever, the generalized lever and the lever with minimum preload (eqs 1-20)."""
 from __future__ import annotations
 
+import numpy as np
+from numpy.typing import ArrayLike
+
 
 
 from ..registry import example
 from ...core.design import Design
 from ...core.elements import Load, Spring, SymbolicParts
-from ...core.validation import MIN_POSITIVE, finite_real
+from ...core.validation import MIN_POSITIVE, finite_real, real_array
 from ...mechanisms.lever import lever_design
 
-__all__ = ["lacoste_lever", "generalized_lever", "min_preload_lever"]
+__all__ = ["lacoste_lever", "lacoste_energies", "generalized_lever", "min_preload_lever"]
 
 
 @example("lacoste_lever", "LaCoste's lever (Singh eqs 1-3)", chapter=2,
@@ -59,6 +62,41 @@ def lacoste_lever(weight: float, length: float, a_x: float, b_y: float) -> Desig
         labels={"O": (0, (0.0, 0.0)), "a": (1, (a_x, 0.0)), "b": (0, (0.0, b_y)), "p": (1, (l, 0.0))},
         parameters={"k": k, "a_x": a_x, "b_y": b_y, "PE": W * l / 2 * (a_x / b_y + b_y / a_x)},
         reference="Singh & Ananthasuresh, eqs 1-3 (LaCoste 1934)", link="lever")
+
+
+def lacoste_energies(weight: float, length: float, a_x: ArrayLike, b_y: ArrayLike) -> np.ndarray:
+    """Energy (J) of the LaCoste lever built at every ``(a_x, b_y)``: its design space as numbers.
+
+    Each lever is :func:`lacoste_lever` with those attachments; it is balanced, so its
+    energy is the same at every configuration, and the mean over four configurations
+    spread over a turn is that constant.
+
+    Parameters
+    ----------
+    weight : float
+        Weight at the tip (N), > 0.
+    length : float
+        Length of the lever (m), > 0.
+    a_x, b_y : array_like
+        Attachment on the link and anchor height (m), each > 0; broadcast together.
+
+    Returns
+    -------
+    numpy.ndarray
+        The energies (J), of the broadcast shape of ``a_x`` and ``b_y``.
+
+    Examples
+    --------
+    >>> lacoste_energies(10.0, 0.5, [0.2, 0.4], 0.4).round(3).tolist()
+    [6.25, 5.0]
+    """
+    a_x, b_y = np.broadcast_arrays(real_array("a_x (m)", a_x), real_array("b_y (m)", b_y))
+    out = np.empty(a_x.shape)
+    q = np.linspace(-np.pi, np.pi, 4, endpoint=False)[:, None]
+    for idx in np.ndindex(a_x.shape):
+        design = lacoste_lever(weight, length, float(a_x[idx]), float(b_y[idx]))
+        out[idx] = float(np.mean(design.potential_energy(q).total))
+    return out
 
 
 @example("generalized_lever", "Generalized lever (Singh eqs 12-17)", chapter=2,
