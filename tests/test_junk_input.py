@@ -42,7 +42,15 @@ CHAIN = lambda: lustig.SerialChain((0.3, 0.3), (2.0, 2.0), ((0.1, 0.0), (0.15, 0
 _LEVER = lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
 _REAL_SPRING = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
 _NONCIRCULAR = realize.noncircular_pulley(_LEVER, spring_model=_REAL_SPRING, angle_range=(-1.0, 1.0), min_tension=45.0)
-_EXPORT_TO = str(Path(tempfile.mkdtemp(prefix="balancelab-junk-")) / "pulley.csv")
+
+
+def _export_profile(design, path="pulley.csv", spring=0, *, n=None, tolerance=1e-3):
+    """``realize.export_profile`` into a folder of its own that is removed afterwards (a file name
+    is placed there; anything else, junk included, is passed on as given)."""
+    with tempfile.TemporaryDirectory(prefix="balancelab-junk-") as folder:
+        where = Path(folder) / path if isinstance(path, str) and path and "/" not in path else path
+        return realize.export_profile(design, where, spring, n=n, tolerance=tolerance)
+
 
 MANUAL = {
     # core constructors
@@ -145,7 +153,7 @@ MANUAL = {
                                                                     "angle_range": (-1.0, 1.0)}),
     "spring_limits": (realize.spring_limits, (_REAL_SPRING,), {}),
     "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
-    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"tolerance": 1e-3}),
+    "export_profile": (_export_profile, (_NONCIRCULAR, "pulley.csv"), {"tolerance": 1e-3}),
     "sleeve_lever": (realize.sleeve_lever, (), {"mass": 2.0, "length": 0.5, "b": 0.3, "c": 0.2, "free_length": 0.05}),
 }
 
@@ -417,3 +425,20 @@ def test_the_integer_validator_accepts_exactly_the_integers_in_range(value, mini
         positive_int("count", value, minimum, maximum)
     assert str(err.value).startswith("count must be an integer")
     assert (f">= {minimum}" if maximum is None else f"in {minimum}..{maximum}") in str(err.value)
+
+
+def test_junk_tests_leave_no_folder_behind(tmp_path):
+    """Importing this module (as every xdist worker does) and exporting a pulley profile with good and
+    junk paths leave no ``balancelab-junk-*`` folder in the temporary folder."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys; sys.path.insert(0, 'tests'); import test_junk_input as t; "
+            "t.test_baseline_calls_are_valid('export_profile'); "
+            "[t.check_junk('export_profile', p, j, l) for p in ('path', 'tolerance') "
+            "for l, j in t.junk_values(t._bound('export_profile')[1][p], p)]")
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    subprocess.run([sys.executable, "-c", code], cwd=Path(__file__).parents[1], env=env, check=True,
+                   timeout=300, capture_output=True)
+    assert not sorted(p.name for p in tmp_path.glob("balancelab-junk-*"))

@@ -267,8 +267,10 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(-2.0, 2.0))
     with pytest.raises(TypeError, match="spring_model"):
         rz.noncircular_pulley(lever, spring_model=100.0)
-    with pytest.raises(ValueError, match="spring must be in"):
+    with pytest.raises(ValueError, match=r"spring must be an integer in 0\.\.0, got 3"):
         rz.noncircular_pulley(lever, 3, spring_model=REAL)
+    with pytest.raises(TypeError, match=r"spring must be an integer in 0\.\.0, got 0\.0"):
+        rz.noncircular_pulley(lever, 0.0, spring_model=REAL)
     with pytest.raises(ValueError, match="turn"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
     with pytest.raises(ValueError, match=r"it must join the ground \(body 0\) to the body it pulls"):
