@@ -139,10 +139,11 @@ def _elements(design: Design, blocks, x: np.ndarray):
             ends[b.free] = (ends[b.free][0], tuple(0.0 if abs(v) < 1e-12 * size else v for v in point))
         if b.kind == "spring":
             j = len(springs) + 1
-            # the naming table: end a on the moving body, b on the anchor body (the ground, if either is)
+            springs.append(Spring(value, 0.0, ends[0], ends[1], name=f"k{j}"))
+            # the naming table: parameters a_* on the moving body, b_* on the anchor (the ground, if
+            # either end is), whichever order the candidate gave (the Spring keeps the given order)
             flip = ends[0][0] == 0 and ends[1][0] != 0
             a_end, b_end = (ends[1], ends[0]) if flip else (ends[0], ends[1])
-            springs.append(Spring(value, 0.0, a_end, b_end, name=f"k{j}"))
             params.update({f"k{j}": value, f"a_x{j}": float(a_end[1][0]), f"a_y{j}": float(a_end[1][1]),
                            f"b_x{j}": float(b_end[1][0]), f"b_y{j}": float(b_end[1][1])})
             if b.free is not None:
