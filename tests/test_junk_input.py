@@ -11,11 +11,18 @@ a ``RuntimeWarning``. A public callable with no baseline must be listed in ``EXE
 reason, so a new builder cannot be forgotten. A ``Load`` or ``Spring`` cannot know how many
 bodies there are: the ``Design`` refuses an out-of-range body index (tested below). Angles of a
 fully rotating linkage are accepted modulo 2 pi.
+
+The junk cases (about 2,700) are not each a test: one test shows that every parameter of every
+builder goes through a check (its first junk value is refused by name), a property test draws
+cases from the whole list on every run, and the validators' own properties
+(``tests/test_validation_properties.py``) prove what each check does with every kind of junk.
+``BALANCELAB_JUNK_ALL=1`` runs every enumerated case as its own test.
 """
 from __future__ import annotations
 
 import inspect
 import math
+import os
 import tempfile
 import warnings
 from pathlib import Path
@@ -308,7 +315,8 @@ def _bound(name):
                 if sig.parameters[k].kind not in (inspect.Parameter.VAR_POSITIONAL, inspect.Parameter.VAR_KEYWORD)}
 
 
-def _cases():
+def _cases() -> list[tuple]:
+    """``(builder, parameter, junk, label)`` for every junk value of every parameter of every builder."""
     out = []
     for name in sorted(BASELINES):
         fn, params = _bound(name)
@@ -316,8 +324,11 @@ def _cases():
             continue
         for pname, value in params.items():
             for label, junk in junk_values(value, pname, name):
-                out.append(pytest.param(name, pname, junk, label, id=f"{name}-{pname}-{label}"))
+                out.append((name, pname, junk, label))
     return out
+
+
+CASES = _cases()
 
 
 def _call(name, pname, junk):
@@ -337,8 +348,35 @@ def check_junk(name, pname, junk, label=""):
     assert magnitude, f"{name}({pname}={junk!r}) was accepted"
 
 
-@pytest.mark.parametrize("name, pname, junk, label", _cases())
-def test_junk_is_refused_with_the_parameter_named(name, pname, junk, label):
+def test_every_builder_checks_every_parameter():
+    """The one coverage test: every parameter of every public builder refuses its first junk value
+    (``None``, a string, a wrong option) with a message naming it, so each goes through a check of
+    ``core.validation``, whose behaviour on every kind of junk the property tests prove
+    (``tests/test_validation_properties.py``)."""
+    failures, first = [], {}
+    for name, pname, junk, label in CASES:
+        first.setdefault((name, pname), (junk, label))
+    for (name, pname), (junk, label) in first.items():
+        try:
+            check_junk(name, pname, junk, label)
+        except AssertionError as err:
+            failures.append(str(err).splitlines()[0])
+    assert len(first) > 300 and not failures, failures
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=st.sampled_from(CASES))
+def test_junk_is_refused_with_the_parameter_named(case):
+    """A sample of every enumerated junk case (all of them: ``BALANCELAB_JUNK_ALL=1``)."""
+    check_junk(*case)
+
+
+ALL_CASES = CASES if os.environ.get("BALANCELAB_JUNK_ALL") else []
+
+
+@pytest.mark.parametrize("name, pname, junk, label", ALL_CASES, ids=[f"{c[0]}-{c[1]}-{c[3]}" for c in ALL_CASES])
+def test_every_junk_case_is_refused_with_the_parameter_named(name, pname, junk, label):
+    """Every enumerated junk case (about 2,700 calls): only with ``BALANCELAB_JUNK_ALL=1``."""
     check_junk(name, pname, junk, label)
 
 
