@@ -12,7 +12,7 @@ def chain(rng, n):
     for i in range(n):
         length = rng.uniform(0.2, 0.8)
         lk.revolute(prev, tip, f"link{i + 1}", (0.0, 0.0))
-        lk.mass(f"link{i + 1}", rng.uniform(0.5, 3.0), at=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
+        lk.mass(f"link{i + 1}", rng.uniform(0.5, 3.0), com=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
         prev, tip = f"link{i + 1}", (length, 0.0)
     return lk.build()
 
@@ -31,7 +31,7 @@ def fourbar(rng):
     lk.revolute("coupler", (coupler, 0.0), "rocker", (rocker, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (ground, 0.0))
     for body, length in (("crank", crank), ("coupler", coupler), ("rocker", rocker)):
-        lk.mass(body, rng.uniform(0.5, 3.0), at=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
+        lk.mass(body, rng.uniform(0.5, 3.0), com=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
     return lk.build(guess={"crank": rng.uniform(-np.pi, np.pi), "rocker": rng.uniform(-np.pi, np.pi)})
 
 
@@ -43,7 +43,7 @@ def flat_parallelogram(rng):
     lk.revolute("coupler", (ground, 0.0), "rocker", (crank, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (ground, 0.0))
     for body, length in (("crank", crank), ("coupler", ground), ("rocker", crank)):
-        lk.mass(body, rng.uniform(0.5, 3.0), at=(rng.uniform(0, length), 0.0))
+        lk.mass(body, rng.uniform(0.5, 3.0), com=(rng.uniform(0, length), 0.0))
     return lk.build()
 
 
@@ -56,7 +56,7 @@ def fivebar(rng):
     lk.revolute("upper right", (0.0, 0.0), "right", (d, 0.0))
     lk.revolute("right", (0.0, 0.0), "ground", (e * 0.6, 0.0))
     for body in ("left", "upper left", "upper right", "right"):
-        lk.mass(body, rng.uniform(0.5, 2.0), at=(0.15, 0.0))
+        lk.mass(body, rng.uniform(0.5, 2.0), com=(0.15, 0.0))
     return lk.build(guess={"left": 1.6, "upper left": 0.3, "upper right": 2.8, "right": 1.5})
 
 
@@ -99,7 +99,7 @@ def slider_crank(rng):
     angle = rng.uniform(-0.5, 0.5)
     lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(np.cos(angle), np.sin(angle)))
     for body, length in (("crank", crank), ("rod", rod)):
-        lk.mass(body, rng.uniform(0.5, 3.0), at=(rng.uniform(0, length), rng.uniform(-0.05, 0.05)))
+        lk.mass(body, rng.uniform(0.5, 3.0), com=(rng.uniform(0, length), rng.uniform(-0.05, 0.05)))
     lk.mass("slider", rng.uniform(0.5, 3.0))
     return lk.build(guess={"crank": 1.0})
 

@@ -19,7 +19,7 @@ G = 9.81
 def lever(mass=2.0, com=0.5):
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", mass, at=(com, 0.0))
+    lk.mass("arm", mass, com=(com, 0.0))
     return lk.build()
 
 
@@ -28,7 +28,7 @@ def chain(lengths, masses, coms):
     prev, tip = "ground", (0.0, 0.0)
     for i, (length, mass, com) in enumerate(zip(lengths, masses, coms)):
         lk.revolute(prev, tip, f"link{i + 1}", (0.0, 0.0))
-        lk.mass(f"link{i + 1}", mass, at=com)
+        lk.mass(f"link{i + 1}", mass, com=com)
         prev, tip = f"link{i + 1}", (length, 0.0)
     return lk.build()
 

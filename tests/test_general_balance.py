@@ -78,7 +78,7 @@ def random_chain(rng, n):
     prev, tip = "ground", (0.0, 0.0)
     for i in range(n):
         lk.revolute(prev, tip, f"link{i + 1}", (0.0, 0.0))
-        lk.mass(f"link{i + 1}", rng.uniform(0.5, 3.0), at=(rng.uniform(0.0, lengths[i]), rng.uniform(-0.1, 0.1)))
+        lk.mass(f"link{i + 1}", rng.uniform(0.5, 3.0), com=(rng.uniform(0.0, lengths[i]), rng.uniform(-0.1, 0.1)))
         prev, tip = f"link{i + 1}", (lengths[i], 0.0)
     return lk.build(), lengths
 
@@ -141,7 +141,7 @@ def test_random_fourbars_balanced_by_the_closed_form_energy(seed):
     lk.revolute("coupler", (coupler, 0.0), "rocker", (rocker, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (ground, 0.0))
     for body, length in (("crank", crank), ("coupler", coupler), ("rocker", rocker)):
-        lk.mass(body, rng.uniform(0.5, 2.0), at=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
+        lk.mass(body, rng.uniform(0.5, 2.0), com=(rng.uniform(0, length), rng.uniform(-0.1, 0.1)))
     d = lk.build(guess={"crank": rng.uniform(-3, 3), "rocker": rng.uniform(-3, 3)})
     out = bl.balance(d, springs=[(("ground", None), ("crank", (crank, 0.0))),
                                  (("ground", None), ("rocker", (rocker, 0.0)))],
@@ -220,7 +220,7 @@ def test_minimum_preload_reproduces_singh():
 def lever():
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", 2.0, at=(0.5, 0.0))
+    lk.mass("arm", 2.0, com=(0.5, 0.0))
     return lk.build()
 
 

@@ -12,15 +12,15 @@ def _fourbar():
     lk.revolute("crank", (0.4, 0), "coupler", (0, 0))
     lk.revolute("coupler", (1, 0), "rocker", (0.8, 0))
     lk.revolute("rocker", (0, 0), "ground", (1, 0))
-    lk.mass("crank", 2, at=(0.2, 0))
-    lk.load("coupler", (0, -30), at=(0.5, 0.1))
+    lk.mass("crank", 2, com=(0.2, 0))
+    lk.load("coupler", (0, -30), com=(0.5, 0.1))
     return lk.build(guess={"crank": 1, "rocker": 1.5})
 
 
 def _lever():
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0, 0), "arm", (0, 0))
-    lk.mass("arm", 2.0, at=(0.5, 0.0))
+    lk.mass("arm", 2.0, com=(0.5, 0.0))
     return lk.build()
 
 
@@ -69,7 +69,7 @@ def test_impossible_only_when_the_relaxation_fails():
     otherwise it is honest about having searched (verdict "not_found")."""
     lk = bl.Linkage("slide")
     lk.revolute("ground", (0, 0), "arm", (0, 0))
-    lk.load("arm", (3.0, -5.0), at=(0.5, 0.2))
+    lk.load("arm", (3.0, -5.0), com=(0.5, 0.2))
     d = lk.build()
     try:
         bl.balance(d, springs=[(("arm", None), ("ground", None))], box=((-0.01, 0.01), (-0.01, 0.01)))
@@ -82,7 +82,7 @@ def _telescoping_arm():
     lk.revolute("ground", (0, 0), "arm", (0, 0))
     lk.prismatic("arm", (0, 0), "slide", (0, 0), axis=(1, 0), stroke=(0.2, 0.8))
     lk.mass("slide", 1.0)
-    lk.mass("arm", 0.5, at=(0.3, 0))
+    lk.mass("arm", 0.5, com=(0.3, 0))
     return lk.build()
 
 

@@ -11,11 +11,18 @@ a ``RuntimeWarning``. A public callable with no baseline must be listed in ``EXE
 reason, so a new builder cannot be forgotten. A ``Load`` or ``Spring`` cannot know how many
 bodies there are: the ``Design`` refuses an out-of-range body index (tested below). Angles of a
 fully rotating linkage are accepted modulo 2 pi.
+
+The junk cases (about 2,700) are not each a test: one test shows that every parameter of every
+builder goes through a check (its first junk value is refused by name), a property test draws
+cases from the whole list on every run, and the validators' own properties
+(``tests/test_validation_properties.py``) prove what each check does with every kind of junk.
+``BALANCELAB_JUNK_ALL=1`` runs every enumerated case as its own test.
 """
 from __future__ import annotations
 
 import inspect
 import math
+import os
 import tempfile
 import warnings
 from pathlib import Path
@@ -42,7 +49,15 @@ CHAIN = lambda: lustig.SerialChain((0.3, 0.3), (2.0, 2.0), ((0.1, 0.0), (0.15, 0
 _LEVER = lecture.single_link_spring(2.0, 0.5, 0.3, 0.2)
 _REAL_SPRING = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
 _NONCIRCULAR = realize.noncircular_pulley(_LEVER, spring_model=_REAL_SPRING, angle_range=(-1.0, 1.0), min_tension=45.0)
-_EXPORT_TO = str(Path(tempfile.mkdtemp(prefix="balancelab-junk-")) / "pulley.csv")
+
+
+def _export_profile(design, path="pulley.csv", spring=0, *, n=None, tolerance=1e-3):
+    """``realize.export_profile`` into a folder of its own that is removed afterwards (a file name
+    is placed there; anything else, junk included, is passed on as given)."""
+    with tempfile.TemporaryDirectory(prefix="balancelab-junk-") as folder:
+        where = Path(folder) / path if isinstance(path, str) and path and "/" not in path else path
+        return realize.export_profile(design, where, spring, n=n, tolerance=tolerance)
+
 
 MANUAL = {
     # core constructors
@@ -148,7 +163,7 @@ MANUAL = {
                                                                     "angle_range": (-1.0, 1.0)}),
     "spring_limits": (realize.spring_limits, (_REAL_SPRING,), {}),
     "profile_part": (realize.profile_part, (_NONCIRCULAR,), {"n": 200}),
-    "export_profile": (realize.export_profile, (_NONCIRCULAR, _EXPORT_TO), {"tolerance": 1e-3}),
+    "export_profile": (_export_profile, (_NONCIRCULAR, "pulley.csv"), {"tolerance": 1e-3}),
     "sleeve_lever": (realize.sleeve_lever, (), {"mass": 2.0, "length": 0.5, "b": 0.3, "c": 0.2, "free_length": 0.05}),
     "mount_normal_springs": (realize.mount_normal_springs, (_LEVER, 0.05), {"springs": [0], "margin": 0.1, "n": 50}),
     "balance_normal": (realize.balance_normal, (lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).replace(springs=[]),),
@@ -307,7 +322,8 @@ def _bound(name):
                 if sig.parameters[k].kind not in (inspect.Parameter.VAR_POSITIONAL, inspect.Parameter.VAR_KEYWORD)}
 
 
-def _cases():
+def _cases() -> list[tuple]:
+    """``(builder, parameter, junk, label)`` for every junk value of every parameter of every builder."""
     out = []
     for name in sorted(BASELINES):
         fn, params = _bound(name)
@@ -315,8 +331,11 @@ def _cases():
             continue
         for pname, value in params.items():
             for label, junk in junk_values(value, pname, name):
-                out.append(pytest.param(name, pname, junk, label, id=f"{name}-{pname}-{label}"))
+                out.append((name, pname, junk, label))
     return out
+
+
+CASES = _cases()
 
 
 def _call(name, pname, junk):
@@ -336,8 +355,35 @@ def check_junk(name, pname, junk, label=""):
     assert magnitude, f"{name}({pname}={junk!r}) was accepted"
 
 
-@pytest.mark.parametrize("name, pname, junk, label", _cases())
-def test_junk_is_refused_with_the_parameter_named(name, pname, junk, label):
+def test_every_builder_checks_every_parameter():
+    """The one coverage test: every parameter of every public builder refuses its first junk value
+    (``None``, a string, a wrong option) with a message naming it, so each goes through a check of
+    ``core.validation``, whose behaviour on every kind of junk the property tests prove
+    (``tests/test_validation_properties.py``)."""
+    failures, first = [], {}
+    for name, pname, junk, label in CASES:
+        first.setdefault((name, pname), (junk, label))
+    for (name, pname), (junk, label) in first.items():
+        try:
+            check_junk(name, pname, junk, label)
+        except AssertionError as err:
+            failures.append(str(err).splitlines()[0])
+    assert len(first) > 300 and not failures, failures
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=st.sampled_from(CASES))
+def test_junk_is_refused_with_the_parameter_named(case):
+    """A sample of every enumerated junk case (all of them: ``BALANCELAB_JUNK_ALL=1``)."""
+    check_junk(*case)
+
+
+ALL_CASES = CASES if os.environ.get("BALANCELAB_JUNK_ALL") else []
+
+
+@pytest.mark.parametrize("name, pname, junk, label", ALL_CASES, ids=[f"{c[0]}-{c[1]}-{c[3]}" for c in ALL_CASES])
+def test_every_junk_case_is_refused_with_the_parameter_named(name, pname, junk, label):
+    """Every enumerated junk case (about 2,700 calls): only with ``BALANCELAB_JUNK_ALL=1``."""
     check_junk(name, pname, junk, label)
 
 
@@ -424,3 +470,20 @@ def test_the_integer_validator_accepts_exactly_the_integers_in_range(value, mini
         positive_int("count", value, minimum, maximum)
     assert str(err.value).startswith("count must be an integer")
     assert (f">= {minimum}" if maximum is None else f"in {minimum}..{maximum}") in str(err.value)
+
+
+def test_junk_tests_leave_no_folder_behind(tmp_path):
+    """Importing this module (as every xdist worker does) and exporting a pulley profile with good and
+    junk paths leave no ``balancelab-junk-*`` folder in the temporary folder."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("import sys; sys.path.insert(0, 'tests'); import test_junk_input as t; "
+            "t.test_baseline_calls_are_valid('export_profile'); "
+            "[t.check_junk('export_profile', p, j, l) for p in ('path', 'tolerance') "
+            "for l, j in t.junk_values(t._bound('export_profile')[1][p], p)]")
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    subprocess.run([sys.executable, "-c", code], cwd=Path(__file__).parents[1], env=env, check=True,
+                   timeout=300, capture_output=True)
+    assert not sorted(p.name for p in tmp_path.glob("balancelab-junk-*"))

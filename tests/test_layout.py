@@ -4,6 +4,8 @@ from __future__ import annotations
 import ast
 import importlib
 import inspect
+import io
+import tokenize
 from pathlib import Path
 
 import pytest
@@ -14,8 +16,17 @@ PACKAGE = Path(bl.__file__).parent
 MODULES = sorted(p for p in PACKAGE.rglob("*.py"))
 #: a layer may import itself and the layers before it
 LAYERS = ["core", "mechanisms", "methods", "viz", "course"]
-MAX_MODULE_LINES = 600
-MAX_FUNCTION_LINES = 80
+#: Size limits in *code lines*: lines holding code, not docstrings, comments or blank lines (the
+#: README's "Where things go" gives the reasons). Documentation never counts against a module.
+MAX_MODULE_CODE_LINES = 400
+MAX_CLASS_CODE_LINES = 250
+MAX_FUNCTION_CODE_LINES = 60
+#: classes over the limit, each with the reason and what splits it
+OVER_THE_LIMIT = {
+    "balancelab.mechanisms.linkage.kinematics.LinkageKinematics":
+        "numeric kinematics of any linkage: issue 22 item 3 moves its transforms into the one kernel "
+        "(another branch); split the grid fill from the solver after that merge",
+}
 
 
 def _name(path: Path) -> str:
@@ -94,24 +105,58 @@ def test_every_module_declares_its_public_names(path):
         assert hasattr(module, name), f"{_name(path)}.__all__ names {name!r}, which it lacks"
 
 
-@pytest.mark.parametrize("path", MODULES, ids=_name)
-def test_modules_and_functions_are_short_enough_to_read(path):
-    text = path.read_text(encoding="utf-8")
+def code_lines(text: str) -> set[int]:
+    """Numbers of the lines of ``text`` that hold code: no docstring, comment or blank line."""
     tree = ast.parse(text)
-    lines = len(text.splitlines())
-    doc = ast.get_docstring(tree) or ""
-    assert lines <= MAX_MODULE_LINES or "must be longer" in doc, (
-        f"{_name(path)} has {lines} lines; split it or say in its docstring why it must be longer")
+    docs = set()
     for node in ast.walk(tree):
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            body = node.body
-            if body and isinstance(body[0], ast.Expr) and isinstance(getattr(body[0], "value", None),
-                                                                      ast.Constant):
-                body = body[1:]  # the docstring does not count
-            if not body:
-                continue
-            n = body[-1].end_lineno - body[0].lineno + 1
-            assert n <= MAX_FUNCTION_LINES, f"{_name(path)}.{node.name} runs {n} lines"
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(
+                    first.value.value, str):
+                docs.update(range(first.lineno, first.end_lineno + 1))
+    lines = set()
+    skip = {tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT, tokenize.ENDMARKER}
+    for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+        if tok.type not in skip:
+            lines.update(range(tok.start[0], tok.end[0] + 1))
+    return lines - docs
+
+
+def test_code_lines_count_code_only():
+    text = ('"""Module doc\n\nlong."""\n\n# a comment\nimport os\n\n\ndef f(x):\n    """Doc."""\n'
+            '    y = (x +\n         1)  # trailing\n    return y\n\n\nclass A:\n    """Doc\n    more."""\n'
+            '    z = """a string value\n    on two lines"""\n')
+    assert sorted(code_lines(text)) == [6, 9, 11, 12, 13, 16, 19, 20]
+
+
+def _sized(tree: ast.Module, lines: set[int], prefix: str):
+    """``(qualified name, kind, code lines)`` of every class and function in ``tree``."""
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
+            kind = "class" if isinstance(node, ast.ClassDef) else "function"
+            n = sum(1 for line in lines if node.lineno <= line <= node.end_lineno)
+            yield f"{prefix}.{node.name}", kind, n
+
+
+@pytest.mark.parametrize("path", MODULES, ids=_name)
+def test_modules_classes_and_functions_are_short_enough_to_read(path):
+    text = path.read_text(encoding="utf-8")
+    lines = code_lines(text)
+    assert len(lines) <= MAX_MODULE_CODE_LINES, (
+        f"{_name(path)} has {len(lines)} code lines (limit {MAX_MODULE_CODE_LINES}): split it by concept")
+    limit = {"class": MAX_CLASS_CODE_LINES, "function": MAX_FUNCTION_CODE_LINES}
+    for name, kind, n in _sized(ast.parse(text), lines, _name(path)):
+        if name not in OVER_THE_LIMIT:
+            assert n <= limit[kind], f"{kind} {name} has {n} code lines (limit {limit[kind]}): split it by concept"
+
+
+def test_classes_over_the_limit_are_still_over_it():
+    """An exception to the class limit goes once the class is split."""
+    sizes = {name: n for path in MODULES for name, kind, n in
+             _sized(_tree(path), code_lines(path.read_text(encoding="utf-8")), _name(path)) if kind == "class"}
+    for name in OVER_THE_LIMIT:
+        assert sizes.get(name, 0) > MAX_CLASS_CODE_LINES, f"{name} is within the limit now: drop its exception"
 
 
 #: inside ``methods``: which family may import which other family (``registry`` is open to all).

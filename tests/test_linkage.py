@@ -124,7 +124,7 @@ def test_tree_energy_is_symbolic_too():
     lk_mass = bl.Linkage("arm")
     lk_mass.revolute("ground", (0.0, 0.0), "a", (0.0, 0.0))
     lk_mass.revolute("a", (0.5, 0.0), "b", (0.0, 0.0))
-    lk_mass.mass("b", 2.0, at=(0.3, 0.0))
+    lk_mass.mass("b", 2.0, com=(0.3, 0.0))
     arm = lk_mass.build()
     t1, t2 = arm.kinematics.symbols()
     expr = arm.potential_energy_symbolic(parametric=False)

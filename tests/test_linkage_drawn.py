@@ -19,7 +19,7 @@ def flat_parallelogram(crank=0.5, ground=1.0):
     lk.revolute("crank", (crank, 0.0), "coupler", (0.0, 0.0))
     lk.revolute("coupler", (ground, 0.0), "rocker", (crank, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (ground, 0.0))
-    lk.mass("crank", 2.0, at=(crank / 2, 0.0))
+    lk.mass("crank", 2.0, com=(crank / 2, 0.0))
     return lk
 
 
@@ -31,8 +31,8 @@ def lamp(**build):
     lk.revolute("ground", (0.0, 0.0), "copy of link 2", (0.0, 0.0))
     lk.revolute("copy of link 2", (-offset, 0.0), "copy of link 1", (0.0, 0.0))
     lk.revolute("copy of link 1", (length, 0.0), "link 2", (-offset, 0.0))
-    lk.mass("link 1", 1.0, at=(length / 2, 0.0))
-    lk.mass("link 2", 1.0, at=(length / 2, 0.0))
+    lk.mass("link 1", 1.0, com=(length / 2, 0.0))
+    lk.mass("link 2", 1.0, com=(length / 2, 0.0))
     return lk.build(**build)
 
 
@@ -77,7 +77,7 @@ def test_a_change_point_fourbar_drawn_folded_flat_builds():
     lk.revolute("crank", (-0.2, 0.0), "coupler", (0.0, 0.0))
     lk.revolute("coupler", (0.4, 0.0), "rocker", (-0.3, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (0.5, 0.0))
-    lk.mass("coupler", 1.0, at=(0.2, 0.0))
+    lk.mass("coupler", 1.0, com=(0.2, 0.0))
     d = lk.build()
     assert d.dof == 1
     q = d.sample(400)

@@ -267,8 +267,10 @@ def test_bad_input_names_the_parameter(lever):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=(-2.0, 2.0))
     with pytest.raises(TypeError, match="spring_model"):
         rz.noncircular_pulley(lever, spring_model=100.0)
-    with pytest.raises(ValueError, match="spring must be in"):
+    with pytest.raises(ValueError, match=r"spring must be an integer in 0\.\.0, got 3"):
         rz.noncircular_pulley(lever, 3, spring_model=REAL)
+    with pytest.raises(TypeError, match=r"spring must be an integer in 0\.\.0, got 0\.0"):
+        rz.noncircular_pulley(lever, 0.0, spring_model=REAL)
     with pytest.raises(ValueError, match="turn"):
         rz.noncircular_pulley(lever, spring_model=REAL, angle_range=RANGE, min_tension=45.0, turn=2)
     with pytest.raises(ValueError, match=r"it must join the ground \(body 0\) to the body it pulls"):
@@ -409,7 +411,7 @@ def test_spring_limits_credit_the_part_that_governs(lever, design):
 def test_a_lever_built_with_linkage_is_accepted_and_balanced():
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.mass("arm", MASS, com=(LENGTH, 0.0))
     lk.spring("ground", (0.0, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
     d = lk.build()
     assert d.balance_report().balanced
@@ -424,7 +426,7 @@ def test_a_lever_built_with_linkage_is_accepted_and_balanced():
 def test_a_spring_that_does_not_join_the_ground_or_a_pivoted_body_is_refused_with_the_reason():
     lk = bl.Linkage("offset lever")
     lk.revolute("ground", (0.1, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", MASS, at=(LENGTH, 0.0))
+    lk.mass("arm", MASS, com=(LENGTH, 0.0))
     lk.spring("ground", (0.1, B), "arm", (C, 0.0), MASS * G * LENGTH / (B * C))
     with pytest.raises(ValueError, match=r"turn about a ground pivot at the world origin"):
         rz.noncircular_pulley(lk.build(), spring_model=REAL, angle_range=RANGE, min_tension=45.0)

@@ -18,9 +18,9 @@ def triple(lk, f):
     """Down, down and up by F on crank, rocker and coupler of the parallelogram: the three points rise
     by 0.3 sin t, 0.2 sin t and 0.5 sin t (t the crank's angle), so the energies F 0.3 sin t +
     F 0.2 sin t - F 0.5 sin t sum to zero, though no two of them cancel."""
-    lk.load("crank", (0.0, -f), at=(0.3, 0.0))
-    lk.load("rocker", (0.0, -f), at=(0.2, 0.0))
-    lk.load("coupler", (0.0, f), at=(0.3, 0.0))
+    lk.load("crank", (0.0, -f), com=(0.3, 0.0))
+    lk.load("rocker", (0.0, -f), com=(0.2, 0.0))
+    lk.load("coupler", (0.0, f), com=(0.3, 0.0))
 
 
 def parallelogram(force=0.0, spring_error=None, extra=triple):
@@ -30,7 +30,7 @@ def parallelogram(force=0.0, spring_error=None, extra=triple):
     lk.revolute("crank", (0.5, 0.0), "coupler", (0.0, 0.0))
     lk.revolute("coupler", (1.0, 0.0), "rocker", (0.5, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
-    lk.mass("crank", M, at=(COM, 0.0))
+    lk.mass("crank", M, com=(COM, 0.0))
     if spring_error is not None:
         lk.spring("crank", (A, 0.0), "ground", (0.0, B), K * (1.0 + spring_error))
     if force:
@@ -80,8 +80,8 @@ def test_cancelling_loads_do_not_inflate_a_spring_loaded_yardstick():
     lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
     lk.spring("crank", (0.2, 0.0), "ground", (0.0, 0.4), 100.0)
     lk.spring("rocker", (0.2, 0.0), "ground", (1.0, -0.4), 100.0 * (1 + 1e-3))  # would balance it at exactly 100
-    lk.load("coupler", (0.0, 1e10), at=(0.2, 0.0))
-    lk.load("coupler", (0.0, -1e10), at=(0.7, 0.1))
+    lk.load("coupler", (0.0, 1e10), com=(0.2, 0.0))
+    lk.load("coupler", (0.0, -1e10), com=(0.7, 0.1))
     triple(lk, 1e10)
     d = lk.build(guess={"crank": 1.0, "rocker": 1.0})
     q = d.sample(300, seed=2)

@@ -13,21 +13,21 @@ def parallelogram(extra, balanced_crank=False, force=1e10):
     lk.revolute("crank", (0.5, 0.0), "coupler", (0.0, 0.0))
     lk.revolute("coupler", (1.0, 0.0), "rocker", (0.5, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
-    lk.mass("crank", 2.0, at=(0.25, 0.0))
+    lk.mass("crank", 2.0, com=(0.25, 0.0))
     if balanced_crank:
-        lk.mass("crank", 2.0, at=(-0.25, 0.0), name="counterweight")
+        lk.mass("crank", 2.0, com=(-0.25, 0.0), name="counterweight")
     extra(lk, force)
     return lk.build(guess={"crank": 1.0, "rocker": 1.0})
 
 
 def on_the_coupler(lk, f):  # the coupler translates: equal and opposite forces at two of its points cancel
-    lk.load("coupler", (0.0, f), at=(0.2, 0.0))
-    lk.load("coupler", (0.0, -f), at=(0.8, 0.1))
+    lk.load("coupler", (0.0, f), com=(0.2, 0.0))
+    lk.load("coupler", (0.0, -f), com=(0.8, 0.1))
 
 
 def on_crank_and_rocker(lk, f):  # crank and rocker turn alike: opposite forces at the same local point cancel
-    lk.load("crank", (f, 0.0), at=(0.5, 0.0))
-    lk.load("rocker", (-f, 0.0), at=(0.5, 0.0))
+    lk.load("crank", (f, 0.0), com=(0.5, 0.0))
+    lk.load("rocker", (-f, 0.0), com=(0.5, 0.0))
 
 
 @pytest.mark.parametrize("extra", [on_the_coupler, on_crank_and_rocker])
@@ -54,10 +54,10 @@ def _spring_lever(rel_error, extra=()):
     """Lever, 2 kg at 0.5 m, ZFL spring arm (0.25, 0) to ground (0, 0.4): k = m g l / (a b) = 98.1 N/m."""
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", 2.0, at=(0.5, 0.0))
+    lk.mass("arm", 2.0, com=(0.5, 0.0))
     lk.spring("arm", (0.25, 0.0), "ground", (0.0, 0.4), 2.0 * 9.81 * 0.5 / (0.25 * 0.4) * (1 + rel_error))
     for force, at in extra:
-        lk.load("arm", force, at=at)
+        lk.load("arm", force, com=at)
     return lk.build()
 
 
@@ -76,7 +76,7 @@ def test_two_opposing_stiff_springs_do_not_hide_a_small_mass():
     1 mg at 0.5 m is not balanced by anything."""
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    lk.mass("arm", 1e-6, at=(0.5, 0.0))
+    lk.mass("arm", 1e-6, com=(0.5, 0.0))
     lk.spring("arm", (0.25, 0.0), "ground", (0.0, 0.4), 1e9)
     lk.spring("arm", (0.25, 0.0), "ground", (0.0, -0.4), 1e9)
     assert not lk.build().balance_report().balanced
@@ -86,10 +86,10 @@ def test_balance_never_returns_a_design_its_report_calls_unbalanced():
     lk = bl.Linkage("2R")
     lk.revolute("ground", (0, 0), "L1", (0, 0))
     lk.revolute("L1", (0.5, 0), "L2", (0, 0))
-    lk.mass("L1", 1, at=(0.25, 0))
-    lk.mass("L2", 1, at=(0.25, 0))
-    lk.load("L1", (0, 1e11), at=(0.1, 0))
-    lk.load("L1", (0, -1e11), at=(0.3, 0.05))
+    lk.mass("L1", 1, com=(0.25, 0))
+    lk.mass("L2", 1, com=(0.25, 0))
+    lk.load("L1", (0, 1e11), com=(0.1, 0))
+    lk.load("L1", (0, -1e11), com=(0.3, 0.05))
     cands = [(("L1", (0.2, 0)), ("ground", None)), (("L2", (0.2, 0)), ("ground", None)), (("L2", (0.1, 0)), ("L1", None))]
     try:
         out = bl.balance(lk.build(), springs=cands)

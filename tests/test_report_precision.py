@@ -21,7 +21,7 @@ def _lever(spring_error: float | None = None) -> bl.Linkage:
     """2 kg at 0.5 m; with ``spring_error`` the balancing ZFL spring (0.25, 0) -> (0, 0.4), its rate off by it."""
     lk = bl.Linkage("lever")
     lk.revolute("ground", (0, 0), "arm", (0, 0))
-    lk.mass("arm", 2.0, at=(0.5, 0))
+    lk.mass("arm", 2.0, com=(0.5, 0))
     if spring_error is not None:
         lk.spring("arm", (0.25, 0), "ground", (0, 0.4), k=2 * G * 0.5 / (0.25 * 0.4) * (1 + spring_error))
     return lk
@@ -53,8 +53,8 @@ def test_an_idle_stiff_spring_never_hides_an_imbalance(k, x, spring_error):
 def test_opposite_forces_at_one_point_never_hide_an_imbalance(force, x, spring_error):
     assert _own_variation(spring_error) > 1e-4
     lk = _lever(spring_error)
-    lk.load("arm", (force, force), at=(x, 0))
-    lk.load("arm", (-force, -force), at=(x, 0))
+    lk.load("arm", (force, force), com=(x, 0))
+    lk.load("arm", (-force, -force), com=(x, 0))
     r = lk.build().balance_report()
     assert not r.balanced, r
 
@@ -76,10 +76,10 @@ def _parallelogram(force: float, k: float) -> bl.Design:
     lk.revolute("crank", (0.6, 0), "coupler", (0, 0))
     lk.revolute("coupler", (1.0, 0), "rocker", (0.6, 0))
     lk.revolute("rocker", (0, 0), "ground", (1.0, 0))
-    lk.load("crank", (force, 0.3 * force), at=(0.6, 0))
-    lk.load("rocker", (force, 0.3 * force), at=(0.6, 0))
-    lk.load("coupler", (-2 * force, -0.6 * force), at=(0, 0))
-    lk.mass("crank", 1.0, at=(0.5, 0))
+    lk.load("crank", (force, 0.3 * force), com=(0.6, 0))
+    lk.load("rocker", (force, 0.3 * force), com=(0.6, 0))
+    lk.load("coupler", (-2 * force, -0.6 * force), com=(0, 0))
+    lk.mass("crank", 1.0, com=(0.5, 0))
     lk.spring("crank", (0.25, 0), "ground", (0, 0.4), k=k)
     return lk.build()
 

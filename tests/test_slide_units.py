@@ -21,7 +21,7 @@ def cart_pendulum():
     lk.prismatic("ground", (0.0, 0.0), "cart", (0.0, 0.0), axis=(1.0, 0.0), stroke=(-0.3, 0.4))
     lk.revolute("cart", (0.0, 0.0), "pendulum", (0.0, 0.0))
     lk.mass("cart", 2.0)
-    lk.mass("pendulum", 1.0, at=(0.3, 0.0))
+    lk.mass("pendulum", 1.0, com=(0.3, 0.0))
     lk.spring("cart", (0.0, 0.0), "ground", (0.0, 0.0), 50.0)
     return lk.build()
 
@@ -32,7 +32,7 @@ def slider_crank_driven_by_its_slide():
     lk.revolute("crank", (0.2, 0.0), "rod", (0.0, 0.0))
     lk.revolute("rod", (0.6, 0.0), "slider", (0.0, 0.0))
     lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(1.0, 0.0))
-    lk.mass("crank", 1.0, at=(0.1, 0.0))
+    lk.mass("crank", 1.0, com=(0.1, 0.0))
     lk.mass("slider", 2.0)
     return lk.build(driving=["s_1"], guess={"crank": 1.0})
 

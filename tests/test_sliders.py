@@ -19,8 +19,8 @@ def slider_crank(crank=0.2, rod=0.6, driving=None):
     lk.revolute("crank", (crank, 0.0), "rod", (0.0, 0.0))
     lk.revolute("rod", (rod, 0.0), "slider", (0.0, 0.0))
     assert lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(2.0, 0.0)) == "s_1"  # any length
-    lk.mass("crank", 1.0, at=(crank / 2, 0.0))
-    lk.mass("rod", 1.0, at=(rod / 2, 0.0))
+    lk.mass("crank", 1.0, com=(crank / 2, 0.0))
+    lk.mass("rod", 1.0, com=(rod / 2, 0.0))
     lk.mass("slider", 2.0)
     return lk.build(driving=driving, guess={"crank": 1.0})
 
@@ -65,7 +65,7 @@ def test_an_inverted_slider_crank_follows_its_closed_form():
     lk.revolute("crank", (0.2, 0.0), "block", (0.0, 0.0))
     lk.prismatic("guide", (0.0, 0.0), "block", (0.0, 0.0), axis=(1.0, 0.0))
     lk.revolute("guide", (0.0, 0.0), "ground", (0.5, 0.0))
-    lk.mass("guide", 1.0, at=(0.3, 0.0))
+    lk.mass("guide", 1.0, com=(0.3, 0.0))
     d = lk.build(guess={"crank": 1.0, "guide": 2.5, "s_1": 0.5})
     assert d.dof == 1 and d.kinematics.full_turn
     th = np.linspace(-np.pi, np.pi, 61)
@@ -86,7 +86,7 @@ def test_a_lever_driven_by_a_slider_is_balanced_by_a_spring_on_the_slider():
     lk.revolute("lever", (0.4, 0.0), "rod", (0.0, 0.0))
     lk.revolute("rod", (0.5, 0.0), "piston", (0.0, 0.0))
     lk.prismatic("ground", (-1.0, 0.3), "piston", (0.0, 0.0), axis=(1.0, 0.0), stroke=(0.7, 1.3))
-    lk.mass("lever", 3.0, at=(0.3, 0.0))
+    lk.mass("lever", 3.0, com=(0.3, 0.0))
     d = lk.build(driving=["s_1"], guess={"lever": 1.0})
     assert d.q_names == ("s_1",) and d.dof == 1
     out = bl.balance(d, springs=[(("ground", None), ("piston", (0.0, 0.0)))], counterweights=[("lever", None)])
@@ -114,7 +114,7 @@ def scissors_from_scratch(a=0.5):
     lk.revolute("arm 5", (a, 0.0), "slider 7", (0.0, 0.0))
     lk.prismatic("platform 8", (0.0, 0.0), "slider 7", (0.0, 0.0), axis=(1.0, 0.0))
     for ld in cat.loads:
-        lk.load(ld.body, ld.force, at=ld.point, name=ld.name)
+        lk.load(ld.body, ld.force, com=ld.point, name=ld.name)
     s1 = cat.springs[0]  # the finite-free-length spring between the crossings stays; bl.balance finds the other
     lk.spring(s1.a[0], s1.a[1], s1.b[0], s1.b[1], k=s1.k, free_length=s1.free_length, name="k1")
     guess = {"arm 2": 0.6, "arm 3": np.pi - 0.6, "arm 5": 0.6, "arm 6": np.pi - 0.6}

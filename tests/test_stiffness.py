@@ -120,8 +120,11 @@ def test_case_factories_balanced_by_an_independent_energy(case):
 
 
 def test_table3e_case_rejects_other_cases():
-    for bad in (0, 5, "1", True):
-        with pytest.raises(ValueError, match="case must be"):
+    for bad in (0, 5):  # an integer out of range: ValueError; not an integer: TypeError (core.validation)
+        with pytest.raises(ValueError, match=r"case must be an integer in 1\.\.4"):
+            lustig_table3e_case(bad)
+    for bad in ("1", True, 1.0):
+        with pytest.raises(TypeError, match=r"case must be an integer in 1\.\.4"):
             lustig_table3e_case(bad)
 
 

@@ -55,7 +55,9 @@ def planar_point(name: str, value: Any, unit: str = "m") -> tuple[float, float]:
     ...
     ValueError: force (N) must have coordinates of magnitude <= 1e+12 N, got (0, 2e+12)
     """
-    if isinstance(value, (str, bytes)) or value is None or isinstance(value, dict):
+    if isinstance(value, (str, bytes)) or value is None or isinstance(value, dict) or (
+            isinstance(value, (tuple, list)) and any(isinstance(c, (bool, np.bool_)) for c in value)):
+        # a True or False among the coordinates is not a number, though numpy would make it one
         raise TypeError(f"{name} must be a pair of numbers (x, y) in {'metres' if unit == 'm' else unit}, got {value!r}")
     try:
         arr = np.asarray(value)

@@ -87,29 +87,44 @@ def sandbox_available() -> bool:
 def _python_roots() -> list[str]:
     """Folders this Python needs: its prefixes, its standard library and its site-packages (never
     ``sys.path`` as such: ``python -m`` puts the working folder first there, and the grader's
-    working folder may hold the solutions or the grades), minus the checkout (an editable install's
+    working folder may hold the solutions or the grades, but the folders of installed distributions it
+    names, see :func:`_site_folders_on_path`), minus the checkout, if the package sits in one (an editable install's
     repository root would show the solutions, tests and book: only the package folder itself is
     bound, see :func:`kernel_binds`), the home folder, the working folder and their parents."""
     import site
     import sysconfig
 
-    checkout = Path(__file__).resolve().parents[2]
+    around = Path(__file__).resolve().parents[2]
+    # a checkout has the build files; from a wheel, the folder around the package is site-packages
+    checkout = around if (around / "pyproject.toml").is_file() else None
     prefixes = [sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix]
     libs = [sysconfig.get_paths().get(k) for k in ("stdlib", "platstdlib", "purelib", "platlib")]
     libs += site.getsitepackages() if hasattr(site, "getsitepackages") else []
-    never = {Path("/"), Path.cwd().resolve(), Path.home().resolve(), checkout}
+    libs += _site_folders_on_path()
+    never = {Path("/"), Path.cwd().resolve(), Path.home().resolve()} | ({checkout} if checkout else set())
     found = set()
     for entry in prefixes + libs:
         if not entry:
             continue
         path = Path(entry).resolve()
-        inside = checkout in path.parents or path in checkout.parents
+        inside = checkout is not None and (checkout in path.parents or path in checkout.parents)
         near = any(path == n or path in n.parents for n in never)  # the cwd, home or a folder above them
         if not path.is_dir() or near or (inside and entry not in prefixes):
             continue
         found.add(path)
     outer = [p for p in found if not any(q in p.parents for q in found)]
     return sorted(str(p) for p in outer)
+
+
+def _site_folders_on_path() -> list[str]:
+    """Folders of installed distributions that ``sys.path`` names besides the site folders (added by a
+    ``.pth`` file or ``PYTHONPATH``): a folder counts when it holds a ``*.dist-info``."""
+    out = []
+    for entry in sys.path:
+        path = Path(entry or ".")
+        if entry and path.is_absolute() and path.is_dir() and next(path.glob("*.dist-info"), None) is not None:
+            out.append(entry)
+    return out
 
 
 #: Files of ``/etc`` a Python kernel reads (the dynamic linker's cache, fonts for plots, the time zone).

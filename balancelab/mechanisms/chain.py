@@ -95,27 +95,27 @@ def serial_chain_kinematics(lengths: Sequence[float]) -> TreeKinematics:
     return _kinematics(serial_chain_joints(lengths))
 
 
-def serial_2r_joints(l: float) -> list:
-    """The revolute joints of a 2R arm whose link 1 is ``l`` long (m, or a sympy symbol).
+def serial_2r_joints(length: float) -> list:
+    """The revolute joints of a 2R arm whose link 1 is ``length`` long (m, or a sympy symbol).
 
     Examples
     --------
     >>> serial_2r_joints(1.0)[1].point_i
     (1.0, 0.0)
     """
-    l = length_or_symbol("l (length of link 1, m)", l)
-    return _joints((l,))
+    length = length_or_symbol("length (of link 1, m)", length)
+    return _joints((length,))
 
 
-def serial_2r_kinematics(l: float) -> TreeKinematics:
-    """Kinematics of a 2R arm: link 1 pivoted at the origin, link 2 at distance ``l`` on it.
+def serial_2r_kinematics(length: float) -> TreeKinematics:
+    """Kinematics of a 2R arm: link 1 pivoted at the origin, link 2 at distance ``length`` on it.
 
     The serial chain of :func:`serial_chain_kinematics` with two links (link 2's own length
     does not enter the kinematics).
 
     Parameters
     ----------
-    l : float
+    length : float
         Length of link 1 (m), > 0.
 
     Returns
@@ -128,8 +128,8 @@ def serial_2r_kinematics(l: float) -> TreeKinematics:
     >>> serial_2r_kinematics(1.0).names
     ('theta_1', 'theta_2')
     """
-    l = finite_real("l (length of link 1, m)", l, positive=True)
-    return _kinematics(serial_2r_joints(l))
+    length = finite_real("length (of link 1, m)", length, positive=True)
+    return _kinematics(serial_2r_joints(length))
 
 
 class SymbolicChainKinematics(Kinematics):

@@ -26,7 +26,7 @@ import numpy as np
 
 from ..core.design import Design
 from ..core.report import q_units
-from ..core.validation import positive_int
+from ..core.validation import finite_real, positive_int
 from .drawing import Drawing, extent
 from .energy import EnergyView, energy_limits, q_symbol, report_summary
 from . import style
@@ -263,9 +263,7 @@ def configuration_path(design: Design, frames: int = 60) -> np.ndarray:
 
 
 def _fps(fps) -> float:
-    if isinstance(fps, bool) or not isinstance(fps, (int, float, np.integer, np.floating)) or not fps > 0:
-        raise ValueError(f"fps must be a positive number of frames per second, got {fps!r}")
-    return float(fps)
+    return finite_real("fps (frames per second)", fps, positive=True)
 
 
 def animate(design: Design, frames: int = 60, fps: float = 24, *, path=None, figsize=FIGSIZE,

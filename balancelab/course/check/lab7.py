@@ -149,8 +149,8 @@ def lab7_slider_crank() -> Design:
     lk.revolute("crank", (v["crank"], 0.0), "rod", (0.0, 0.0))
     lk.revolute("rod", (v["rod"], 0.0), "slider", (0.0, 0.0))
     lk.prismatic("ground", (0.0, 0.0), "slider", (0.0, 0.0), axis=(1.0, 0.0))
-    lk.mass("crank", v["crank_mass"], at=(v["crank"] / 2, 0.0))
-    lk.mass("rod", v["rod_mass"], at=(v["rod_com"], 0.0))
+    lk.mass("crank", v["crank_mass"], com=(v["crank"] / 2, 0.0))
+    lk.mass("rod", v["rod_mass"], com=(v["rod_com"], 0.0))
     lk.mass("slider", v["slider_mass"])
     return lk.build(guess={"crank": 1.0})
 

@@ -10,6 +10,8 @@ points of bodies: each body's local frame is the one its joint points are writte
 """
 from __future__ import annotations
 
+import warnings
+
 from typing import Mapping, Sequence
 
 import numpy as np
@@ -43,8 +45,8 @@ class Linkage:
     >>> lk.revolute("crank", (0.4, 0.0), "coupler", (0.0, 0.0))
     >>> lk.revolute("coupler", (1.0, 0.0), "rocker", (0.8, 0.0))
     >>> lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
-    >>> lk.mass("crank", 2.0, at=(0.2, 0.0))
-    >>> lk.load("coupler", (0.0, -30.0), at=(0.5, 0.1))
+    >>> lk.mass("crank", 2.0, com=(0.2, 0.0))
+    >>> lk.load("coupler", (0.0, -30.0), com=(0.5, 0.1))
     >>> d = lk.build(guess={"crank": 1.0, "rocker": 1.5})
     >>> d.bodies, d.q_names, d.dof
     (('ground', 'crank', 'coupler', 'rocker'), ('theta_1',), 1)
@@ -170,33 +172,39 @@ class Linkage:
         self._strokes.append(stroke)
         return f"s_{len(self._sliders)}"
 
-    def mass(self, body: BodyRef, mass: float, at=(0.0, 0.0), name: str = "") -> None:
-        """Hang a mass ``mass`` (kg) at the local point ``at`` (m) of ``body`` (its weight, g along -y).
+    def mass(self, body: BodyRef, mass: float, com=(0.0, 0.0), name: str = "", *, at=None) -> None:
+        """Hang a mass ``mass`` (kg) at the local point ``com`` (m) of ``body`` (its weight, g along -y).
+
+        ``at=`` is the old name of ``com`` (deprecated: a ``DeprecationWarning``).
 
         Examples
         --------
         >>> lk = Linkage()
         >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-        >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+        >>> lk.mass("arm", 2.0, com=(0.5, 0.0))
         >>> lk.build().loads[0].force
         (0.0, -19.62)
         """
+        com = _renamed("Linkage.mass", at, com)
         b = self._index(body, "body")
-        self._loads.append(gravity_load(b, planar_point("at (m)", at), mass, name=name))
+        self._loads.append(gravity_load(b, planar_point("com (m)", com), mass, name=name))
 
-    def load(self, body: BodyRef, force, at=(0.0, 0.0), name: str = "") -> None:
-        """Apply a constant ``force`` ``(f_x, f_y)`` (N, global frame) at the local point ``at`` of ``body``.
+    def load(self, body: BodyRef, force, com=(0.0, 0.0), name: str = "", *, at=None) -> None:
+        """Apply a constant ``force`` ``(f_x, f_y)`` (N, global frame) at the local point ``com`` of ``body``.
+
+        ``at=`` is the old name of ``com`` (deprecated: a ``DeprecationWarning``).
 
         Examples
         --------
         >>> lk = Linkage()
         >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-        >>> lk.load("arm", (5.0, 0.0), at=(0.3, 0.0))
+        >>> lk.load("arm", (5.0, 0.0), com=(0.3, 0.0))
         >>> lk.build().loads[0].force
         (5.0, 0.0)
         """
+        com = _renamed("Linkage.load", at, com)
         b = self._index(body, "body")
-        self._loads.append(Load(b, planar_point("at (m)", at), planar_point("force (N)", force, unit="N"), name=name))
+        self._loads.append(Load(b, planar_point("com (m)", com), planar_point("force (N)", force, unit="N"), name=name))
 
     def spring(self, body_a: BodyRef, point_a, body_b: BodyRef, point_b, k: float,
                free_length: float = 0.0, name: str = "") -> None:
@@ -320,3 +328,12 @@ class Linkage:
         except RuntimeError as err:
             raise ValueError(f"{design.name}: the linkage does not move from where it is assembled ({err}); "
                              "a loop is probably stretched straight: change the joint points") from None
+
+
+def _renamed(where: str, old, new):
+    """``new``, or ``old`` (given as ``at=``) with a DeprecationWarning: ``at`` became ``com``."""
+    if old is None:
+        return new
+    warnings.warn(f"{where}: at= is deprecated, use com= (the point where the load acts)", DeprecationWarning,
+                  stacklevel=3)
+    return old

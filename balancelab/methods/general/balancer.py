@@ -142,10 +142,15 @@ def _elements(design: Design, blocks, x: np.ndarray):
         if b.kind == "spring":
             j = len(springs) + 1
             springs.append(Spring(value, 0.0, ends[0], ends[1], name=f"k{j}"))
-            params.update({f"k{j}": value, f"a_x{j}": float(ends[0][1][0]), f"a_y{j}": float(ends[0][1][1]),
-                           f"b_x{j}": float(ends[1][1][0]), f"b_y{j}": float(ends[1][1][1])})
+            # the naming table: parameters a_* on the moving body, b_* on the anchor (the ground, if
+            # either end is), whichever order the candidate gave (the Spring keeps the given order)
+            flip = ends[0][0] == 0 and ends[1][0] != 0
+            a_end, b_end = (ends[1], ends[0]) if flip else (ends[0], ends[1])
+            params.update({f"k{j}": value, f"a_x{j}": float(a_end[1][0]), f"a_y{j}": float(a_end[1][1]),
+                           f"b_x{j}": float(b_end[1][0]), f"b_y{j}": float(b_end[1][1])})
             if b.free is not None:
-                active.update(_active(b, ends[b.free][1], (f"{'ab'[b.free]}_x{j}", f"{'ab'[b.free]}_y{j}")))
+                side = "ab"[1 - b.free if flip else b.free]
+                active.update(_active(b, ends[b.free][1], (f"{side}_x{j}", f"{side}_y{j}")))
         else:
             j = sum(ld.kind == "counterweight" for ld in loads) + 1
             loads.append(Load(ends[0][0], ends[0][1], (0.0, -value * G), name=f"m_c{j}", kind="counterweight"))
@@ -234,7 +239,8 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     Design
         A copy with the springs (``k > 0``; candidates that come out at zero are left out)
         and counterweights added; its ``parameters`` hold the rates ``k<j>``, the ends
-        ``a_x<j>, a_y<j>, b_x<j>, b_y<j>``, the counter masses and points, and
+        ``a_x<j>, a_y<j>, b_x<j>, b_y<j>`` (``a`` the end on the moving body, ``b`` the anchor:
+        a candidate's ground end is ``b`` whichever order it was given in), the counter masses and points, and
         ``conditions_rank`` and ``free_choices`` (unknowns minus the rank). For a spring with
         both ends free the count is that of the last linear round (one end free).
 
@@ -251,7 +257,7 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     >>> import balancelab as bl
     >>> lk = bl.Linkage("lever")
     >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> lk.mass("arm", 2.0, com=(0.5, 0.0))
     >>> d = bl.balance(lk.build(), springs=[(("arm", (0.25, 0.0)), ("ground", (0.0, 0.4)))])
     >>> round(d.parameters["k1"], 6), d.balance_report().balanced   # k = m g l / (a b)
     (98.1, True)
@@ -322,7 +328,7 @@ def free_choices(design: Design, springs: Sequence = (), counterweights: Sequenc
     >>> import balancelab as bl
     >>> lk = bl.Linkage("lever")
     >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> lk.mass("arm", 2.0, com=(0.5, 0.0))
     >>> s = free_choices(lk.build(), springs=[(("arm", (0.25, 0.0)), ("ground", None))])
     >>> s.nvar, s.rank, s.free_choices
     (3, 2, 1)

@@ -51,9 +51,9 @@ def arm_3r(lengths: Sequence[float] = (0.5, 0.4, 0.3), masses: Sequence[float] =
     prev, tip = "ground", (0.0, 0.0)
     for name, length, mass in zip(("upper", "fore", "hand"), lengths, masses):
         lk.revolute(prev, tip, name, (0.0, 0.0))
-        lk.mass(name, mass, at=(length / 2, 0.0))
+        lk.mass(name, mass, com=(length / 2, 0.0))
         prev, tip = name, (length, 0.0)
-    lk.mass("hand", lamp, at=tip, name="lamp")
+    lk.mass("hand", lamp, com=tip, name="lamp")
     return lk.build()
 
 
@@ -103,8 +103,8 @@ def fourbar_issue11() -> Design:
     lk.revolute("crank", (0.4, 0.0), "coupler", (0.0, 0.0))
     lk.revolute("coupler", (1.0, 0.0), "rocker", (0.8, 0.0))
     lk.revolute("rocker", (0.0, 0.0), "ground", (1.0, 0.0))
-    lk.mass("crank", 2.0, at=(0.2, 0.0))
-    lk.load("coupler", (0.0, -30.0), at=(0.5, 0.1))
+    lk.mass("crank", 2.0, com=(0.2, 0.0))
+    lk.load("coupler", (0.0, -30.0), com=(0.5, 0.1))
     return lk.build(guess={"crank": 1.0, "rocker": 1.5})
 
 
@@ -153,7 +153,7 @@ def watt_sixbar() -> Design:
     lk.revolute("link5", (0.5, 0.0), "rocker", (0.4, 0.3))
     for body, mass, at in (("coupler", 1.0, (0.5, 0.1)), ("rocker", 1.0, (0.4, 0.0)), ("link4", 0.5, (0.3, 0.0)),
                            ("link5", 0.5, (0.25, 0.0))):
-        lk.mass(body, mass, at=at)
+        lk.mass(body, mass, com=at)
     return lk.build(guess={"crank": 1.2, "rocker": 1.6, "link4": 1.0, "link5": -0.5})
 
 
@@ -180,7 +180,7 @@ def parallelogram_lamp(length: float = 0.5, offset: float = 0.1, masses: Sequenc
     lk.revolute("ground", (0.0, 0.0), "copy of link 2", (0.0, 0.0))
     lk.revolute("copy of link 2", (-offset, 0.0), "copy of link 1", (0.0, 0.0))
     lk.revolute("copy of link 1", (length, 0.0), "link 2", (-offset, 0.0))
-    lk.mass("link 1", masses[0], at=(length / 2, 0.0))
-    lk.mass("link 2", masses[1], at=(length / 2, 0.0))
+    lk.mass("link 1", masses[0], com=(length / 2, 0.0))
+    lk.mass("link 2", masses[1], com=(length / 2, 0.0))
     return lk.build(driving=["link 1", "link 2"],
                     guess={"link 1": 0.5, "link 2": -0.5, "copy of link 2": -0.5, "copy of link 1": 0.5})

@@ -133,7 +133,7 @@ def columns(design, blocks, q) -> Problem:
     >>> import balancelab as bl
     >>> lk = bl.Linkage("lever")
     >>> lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
-    >>> lk.mass("arm", 2.0, at=(0.5, 0.0))
+    >>> lk.mass("arm", 2.0, com=(0.5, 0.0))
     >>> d = lk.build()
     >>> p = columns(d, [Block("spring", [(1, (0.25, 0.0)), (0, (0.0, 0.4))])], d.sample(50))
     >>> p.A.shape, round(float(np.ptp(p.v)), 6) <= 2 * 2.0 * 9.81 * 0.5

@@ -14,7 +14,7 @@ import numpy as np
 
 from ...core.design import Design
 from ...core.elements import G
-from ...core.validation import finite_real
+from ...core.validation import finite_real, positive_int
 from ..registry import example
 from .chain import REFERENCE, SerialChain, chain_parameter_names
 from .solving import solve
@@ -46,9 +46,7 @@ _TABLE3E_INPUTS = {
 
 
 def _case(case) -> int:
-    if isinstance(case, bool) or case not in _TABLE3E_INPUTS:
-        raise ValueError(f"case must be 1, 2, 3 or 4 (Table 3e), got {case!r}")
-    return int(case)
+    return positive_int("case", case, 1, len(_TABLE3E_INPUTS))
 
 
 def lustig_values(case: int, *, solved: bool = True) -> dict:

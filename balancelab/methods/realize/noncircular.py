@@ -32,7 +32,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ...core.design import Design
 from ...core.elements import Spring
-from ...core.validation import finite_real, finite_reals, instance_of, planar_point
+from ...core.validation import finite_real, finite_reals, instance_of, planar_point, positive_int
 from ...mechanisms.base import TreeKinematics
 from ..practice.springs import ExtensionSpring
 from .noncircular_synthesis import DEGREES, at_floor, choose_turn, pivot_inside, search_tension
@@ -82,12 +82,9 @@ def spring_limits(spring_model: ExtensionSpring, cycles: float | None = None) ->
 def _pivoted_link(design: Design, spring) -> tuple[int, int]:
     """``(spring, coordinate)``: the spring's moving body turns about the origin, its angle one coordinate."""
     instance_of("design", design, Design, "a balancelab Design")
-    if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)):
-        raise TypeError(f"spring must be the index of a spring of the design, got {spring!r}")
     if not design.springs:
         raise ValueError(f"{design.name} has no spring: noncircular_pulley replaces one of its springs")
-    if not 0 <= spring < len(design.springs):
-        raise ValueError(f"spring must be in 0..{len(design.springs) - 1}, got {spring}")
+    spring = positive_int("spring", spring, 0, len(design.springs) - 1)
     s = design.springs[int(spring)]
     if s.a.body != 0 and s.b.body != 0:
         raise ValueError(f"{design.name}: spring {spring} joins {design.bodies[s.a.body]} to "

@@ -61,8 +61,9 @@ class ProfilePart(NamedTuple):
 
 def _profile_of(design: Design, spring: int) -> NoncircularProfile:
     instance_of("design", design, Design, "a balancelab Design")
-    if isinstance(spring, bool) or not isinstance(spring, (int, np.integer)) or not 0 <= spring < len(design.springs):
-        raise ValueError(f"spring must be the index of one of the design's {len(design.springs)} springs, got {spring!r}")
+    if not design.springs:
+        raise ValueError(f"{design.name} has no spring, so it has no non-circular pulley to export")
+    spring = positive_int("spring", spring, 0, len(design.springs) - 1)
     prof = design.springs[spring].cable
     if not isinstance(prof, NoncircularProfile):
         raise ValueError(f"{design.name}: spring {spring} is not wound on a non-circular pulley "

@@ -111,7 +111,7 @@ def sleeve_lever(mass: float = 2.0, length: float = 0.5, b: float = 0.3, c: floa
     lk.revolute("link", (c, 0.0), "rod", (0.0, 0.0))
     # the rod's pin C slides on the sleeve's axis; the rod keeps the sleeve's direction
     lk.prismatic("sleeve", (0.0, 0.0), "rod", (0.0, 0.0), axis=(1.0, 0.0), stroke=(abs(b - c), b + c))
-    lk.mass("link", mass, at=(r, 0.0))
+    lk.mass("link", mass, com=(r, 0.0))
     lk.spring("sleeve", (-d, 0.0), "rod", (-e, 0.0), k=k, free_length=l0)
     lk.label("B", "ground", (0.0, b))
     lk.label("C", "link", (c, 0.0))
