@@ -10,8 +10,16 @@ Rows (name, value, unit, target):
 * the scripts, style sheets and fonts every page loads (downloaded once, then cached by the
   browser; MathJax's on-demand parts aside): for information;
 * each chapter's first visit in Chromium (every byte the page fetches with an empty cache),
-  without and with its own inline figures: < 1.5 MB (:func:`first_visit_weights`); animation
-  frames after the first load when the reader reaches the player (book/_ext/lazy_frames.py);
+  without and with its own inline figures (:func:`first_visit_weights`); animation frames after
+  the first load when the reader reaches the player (book/_ext/lazy_frames.py). The target,
+  < 1.5 MB, is on what is *transferred* (issue 20): the bytes a static host sends, text files
+  gzip-compressed, figures included. The raw bytes are for information: of a chapter's ~2.3 MB
+  without figures, 1.16 MB is MathJax's ``tex-chtml.js`` (TeX input, HTML output, the formula
+  menu that copies and zooms a formula and the assistive MathML screen readers read: both are
+  documented features, book/accessibility.md) and 0.4 MB the theme's style sheet, which no
+  static host sends uncompressed (gzip: 0.26 MB and 0.07 MB);
+* the printable course's size, as printed by Chromium and as shipped (scripts/build_pdf.py
+  stores its pictures as indexed images and drops the per-line structure tags): for information;
 * the printable course's build time (Chromium printing the whole course, scripts/build_pdf.py).
 
 The cold build re-executes everything, so this benchmark takes a few minutes.
@@ -158,13 +166,21 @@ def weight_rows(site: Path = SITE) -> list[tuple[str, float, str, str]]:
     served = first_visit_weights(site, figures=True, gzip_text=True)
     for name in bare:
         page = name.split("/")[-1][:-5]
-        rows.append((f"book: first visit of {page} (without its figures)", bare[name] / 1e6, "MB", "< 1.5 MB"))
-        rows.append((f"book: first visit of {page} (with its figures)", whole[name] / 1e6, "MB", "< 1.5 MB"))
+        rows.append((f"book: first visit of {page} (without its figures)", bare[name] / 1e6, "MB", "info"))
+        rows.append((f"book: first visit of {page} (with its figures)", whole[name] / 1e6, "MB", "info"))
         rows.append((f"book: first visit of {page} (with figures, gzip as served)", served[name] / 1e6, "MB",
                      "< 1.5 MB"))
     frames = site / "_images" / "frames"
     deferred = sum(p.stat().st_size for p in frames.iterdir()) / 1e6 if frames.is_dir() else 0.0
     rows.append(("book: animation frames loaded on demand (whole site)", deferred, "MB", "info"))
+    report = site / "balancelab-course.json"
+    if report.is_file():
+        import json
+
+        printed = json.loads(report.read_text())
+        if "bytes" in printed:
+            rows.append(("book: course PDF as Chromium printed it", printed["printed_bytes"] / 1e6, "MB", "info"))
+            rows.append(("book: course PDF as shipped", printed["bytes"] / 1e6, "MB", "info"))
     total = sum(p.stat().st_size for p in site.rglob("*") if p.is_file()) / 1e6
     rows.append(("book: total site size (with the course PDF)", total, "MB", "< 15 MB"))
     return rows

@@ -57,6 +57,10 @@ pre { white-space: pre-wrap !important; overflow-wrap: anywhere; overflow: visib
 mjx-container[display="true"], span.math, div.math { overflow: visible !important; }
 .toggle-hidden { display: block !important; visibility: visible !important; opacity: 1 !important; }
 .bl-title-page { text-align: center; padding-top: 30%; break-after: page; }
+/* no rounded corners or shadows on paper: Chromium prints each rounded or shadowed box with a
+   soft mask, a 1 MP picture per box (5 MB for the course). :is() with an id outranks the theme's
+   own !important rules (.admonition's shadow) */
+:is(#bl-print, *) { border-radius: 0 !important; box-shadow: none !important; }
 .bl-title-page h1 { font-size: 2.2rem; }
 """
 
@@ -155,6 +159,90 @@ def combined_page(site: Path = SITE) -> str:
             + "</article></div></div></main></body></html>")
 
 
+def _indexed(rgb):
+    """``(palette bytes, index bytes)`` of an RGB pixel array of at most 256 colours, else ``None``."""
+    import numpy as np
+
+    packed = (rgb[..., 0].astype(np.uint32) << 16) | (rgb[..., 1].astype(np.uint32) << 8) | rgb[..., 2]
+    colours, index = np.unique(packed.ravel(), return_inverse=True)
+    if len(colours) > 256:
+        return None
+    palette = np.stack([(colours >> 16) & 255, (colours >> 8) & 255, colours & 255], axis=1)
+    return palette.astype(np.uint8).tobytes(), index.astype(np.uint8).tobytes()
+
+
+def _shrink_image(xobj) -> bool:
+    """Store one RGB image XObject of at most 256 colours as an indexed image (lossless)."""
+    import zlib
+
+    import numpy as np
+    from pypdf.generic import ArrayObject, ByteStringObject, NameObject, NumberObject
+
+    space = xobj.get("/ColorSpace")
+    rgb = space == "/DeviceRGB" or (isinstance(space, list) and space[0] == "/ICCBased"
+                                    and space[1].get_object().get("/N") == 3)
+    if not rgb or xobj.get("/BitsPerComponent") != 8:
+        return False
+    w, h = int(xobj["/Width"]), int(xobj["/Height"])
+    raw = xobj.get_data()
+    if len(raw) != w * h * 3:
+        return False
+    found = _indexed(np.frombuffer(raw, np.uint8).reshape(h, w, 3))
+    if found is None:
+        return False
+    palette, index = found
+    data = zlib.compress(index, 9)
+    if len(data) >= len(xobj._data):
+        return False
+    xobj._data = data
+    xobj[NameObject("/Filter")] = NameObject("/FlateDecode")
+    xobj.pop("/DecodeParms", None)
+    xobj[NameObject("/ColorSpace")] = ArrayObject([NameObject("/Indexed"), space,
+                                                   NumberObject(len(palette) // 3 - 1),
+                                                   ByteStringObject(palette)])
+    return True
+
+
+def shrink_pdf(path: Path) -> tuple[int, int]:
+    """Rewrite a PDF printed by Chromium smaller; return its sizes (bytes) before and after.
+
+    * Chromium stores every picture as deflated RGB pixels; the course's figures are palette
+      PNGs of at most 256 colours, so each is stored back as an indexed image with the same
+      pixels (lossless), and an alpha mask that hides nothing is dropped;
+    * Chromium's structure tags (one element per line of text: 56,000 objects, a third of the
+      file) are dropped: the PDF is for printing, the site is the accessible form of the course
+      (book/accessibility.md); the bookmarks (the outline) stay;
+    * identical objects (a picture or a font subset printed twice) are kept once.
+    """
+    import numpy as np
+    from pypdf import PdfReader, PdfWriter
+    from pypdf.generic import NameObject, StreamObject
+
+    before = path.stat().st_size
+    reader = PdfReader(str(path))
+    writer = PdfWriter()
+    writer.append(reader)   # the pages and the outline, not the structure tree
+    if reader.metadata:
+        writer.add_metadata(reader.metadata)
+    for obj in list(writer._objects):
+        if not isinstance(obj, StreamObject) or obj.get("/Subtype") != "/Image":
+            continue
+        mask = obj.get("/SMask")
+        if mask is not None and np.frombuffer(mask.get_object().get_data(), np.uint8).min(initial=255) == 255:
+            del obj["/SMask"]
+        _shrink_image(obj)
+    for page in writer.pages:
+        page.pop(NameObject("/StructParents"), None)
+        for annot in page.get("/Annots", []):
+            annot.get_object().pop(NameObject("/StructParent"), None)
+    writer.compress_identical_objects()   # duplicates and orphans
+    tmp = path.with_suffix(".tmp.pdf")
+    with open(tmp, "wb") as f:
+        writer.write(f)
+    tmp.replace(path)
+    return before, path.stat().st_size
+
+
 class _Quiet(http.server.SimpleHTTPRequestHandler):
     def log_message(self, *args):
         pass
@@ -201,6 +289,7 @@ def build_pdf(site: Path = SITE) -> dict:
         httpd.shutdown()
         httpd.server_close()
         temp.unlink(missing_ok=True)
+    report["printed_bytes"], report["bytes"] = shrink_pdf(site / PDF_NAME)
     report["seconds"] = round(time.perf_counter() - t0, 1)
     (site / REPORT_NAME).write_text(json.dumps(report, indent=1), encoding="utf-8")
     if report["cut"]:

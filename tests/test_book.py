@@ -223,6 +223,63 @@ def test_site_ships_only_assets_some_page_requests(site):
     assert not (site / "_static" / "locales").exists()
     # ... but the vendored copy keeps them for pages that will have widgets
     assert (ROOT / "book" / "_vendor" / "vendor" / "html-manager" / "embed-amd.js").is_file()
+    # no second copy of what MathJax's combined file holds, no icon font older than WOFF2
+    sys.path.insert(0, str(ROOT / "book" / "_ext"))
+    import site_chrome
+
+    bundle = (site / "vendor" / "mathjax" / "tex-chtml.js").read_text()
+    preloaded = " ".join(re.findall(r"preLoad\(([^)]*)\)", bundle))
+    for name in site_chrome.MATHJAX_BUNDLED:
+        assert not (site / "vendor" / "mathjax" / name).exists(), name
+        component = name[:-3] if not name.startswith("output/chtml/fonts") else name
+        component = re.sub(r"^input/tex/extensions/", "[tex]/", component)
+        assert f'"{component}"' in preloaded, f"{name} is not in tex-chtml.js: MathJax would fetch it"
+    legacy = [p.name for p in (site / "vendor").rglob("*") if p.suffix[1:] in site_chrome.LEGACY_FONTS
+              and "html-manager" in p.parts]
+    assert not legacy, legacy
+
+
+def _scripts_module(name: str):
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(name, ROOT / "scripts" / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_printed_course_is_shrunk_without_changing_a_pixel_and_keeps_its_bookmarks(tmp_path):
+    """scripts/build_pdf.shrink_pdf: an RGB picture of few colours comes back pixel for pixel
+    (indexed), an opaque alpha mask goes, the structure tree goes, the outline stays."""
+    import numpy as np
+    from matplotlib.figure import Figure
+    from pypdf import PdfReader, PdfWriter
+    from pypdf.generic import DictionaryObject, NameObject
+
+    build_pdf = _scripts_module("build_pdf")
+    rng = np.random.default_rng(20)
+    colours = rng.integers(0, 256, size=(40, 3), dtype=np.uint8)
+    pixels = colours[rng.integers(0, 40, size=(60, 90))]
+    fig = Figure(figsize=(3, 2))
+    fig.figimage(pixels)
+    raw = tmp_path / "raw.pdf"
+    fig.savefig(raw, format="pdf")
+    writer = PdfWriter(clone_from=PdfReader(str(raw)))
+    writer.add_outline_item(title="Chapter one", page_number=0)
+    writer._root_object[NameObject("/StructTreeRoot")] = writer._add_object(
+        DictionaryObject({NameObject("/Type"): NameObject("/StructTreeRoot")}))
+    printed = tmp_path / "course.pdf"
+    with open(printed, "wb") as f:
+        writer.write(f)
+
+    before, after = build_pdf.shrink_pdf(printed)
+    reader = PdfReader(str(printed))
+    assert "/StructTreeRoot" not in reader.trailer["/Root"]
+    assert [item.title for item in reader.outline] == ["Chapter one"]
+    (image,) = reader.pages[0].images
+    assert image.indirect_reference.get_object()["/ColorSpace"][0] == "/Indexed"
+    assert np.array_equal(np.asarray(image.image.convert("RGB")), pixels)
+    assert after < before
 
 
 def test_launch_buttons_open_only_what_they_can(site):
@@ -639,18 +696,10 @@ def _navigation_problems(page, width: int, where: str) -> list[str]:
     return []
 
 
-#: Pages that still hold an element wider than the 390 px column (a table of ch4, its K_t matrix,
-#: ch5's families figure, ch7's and ch9's exercise formulas): issue 20 is open for them. Any other page with
-#: a wide element fails the test; these make it an expected failure that lists them.
-KNOWN_WIDE = {"book/ch4_serial.html", "book/ch5_fourbar.html", "book/ch7_your_own_linkage.html",
-              "book/ch9_noncircular.html"}
-
-
 @pytest.mark.parametrize("width", [390, 1280])
 def test_every_page_in_a_browser(site, server, browser, width):
     SHOTS.mkdir(parents=True, exist_ok=True)
     problems: list[str] = []
-    known_wide: list[str] = []
     pages = _pages(site)
     assert len(pages) >= len(CHAPTERS)
     ctx = browser.new_context(viewport={"width": width, "height": 900})
@@ -745,8 +794,7 @@ def test_every_page_in_a_browser(site, server, browser, width):
         page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True)
         problems += _reader_problems(page, where)
         if width == 390:
-            found = [f"{where}: wider than the column: {w}" for w in page.evaluate(WIDTH_CHECKS)]
-            (known_wide if rel in KNOWN_WIDE else problems).extend(found)
+            problems += [f"{where}: wider than the column: {w}" for w in page.evaluate(WIDTH_CHECKS)]
         problems += [f"{where}: console error: {c}" for c in console]
         problems += [f"{where}: failed request: {b}" for b in bad]
         page.close()
@@ -754,8 +802,6 @@ def test_every_page_in_a_browser(site, server, browser, width):
     assert not external, f"requests to other hosts: {sorted(set(external))[:10]}"
     assert not problems, "\n".join(problems)
     assert n_anim >= 3, f"only {n_anim} animations in the whole site"
-    if known_wide:   # issue 20, still open: these pages keep elements wider than a phone's column
-        pytest.xfail("known wide elements at 390 px (issue 20):\n" + "\n".join(known_wide))
 
 
 WIDGET_PAGE = """<!DOCTYPE html>

@@ -9,7 +9,9 @@
 * after the build the site sheds what no reader uses (:func:`slim_site`): the Font Awesome
   JavaScript (1.5 MB; the theme's style sheet draws the same icons with its web fonts), the
   MyST sources, MathJax's speech rules for languages other than English (the English rules and
-  Nemeth braille stay: screen readers use them) and MathJax's input bundles no page loads.
+  Nemeth braille stay: screen readers use them), MathJax's input bundles no page loads, the
+  second copies of the components ``tex-chtml.js`` holds (:data:`MATHJAX_BUNDLED`) and the
+  widget manager's icon fonts in formats no browser that runs it asks for (:data:`LEGACY_FONTS`).
 """
 from __future__ import annotations
 
@@ -19,15 +21,26 @@ from pathlib import Path
 
 from docutils import nodes
 
-__all__ = ["PDF_NAME", "setup", "slim_site"]
+__all__ = ["LEGACY_FONTS", "MATHJAX_BUNDLED", "PDF_NAME", "setup", "slim_site"]
 
 #: The printable course, at the site's root.
 PDF_NAME = "balancelab-course.pdf"
+#: Font formats older than WOFF2 that the widget manager's style sheet lists after WOFF2 (every
+#: browser that runs the manager loads the WOFF2 file): 2.8 MB no reader ever fetches.
+LEGACY_FONTS = ("eot", "svg", "ttf", "woff")
+#: MathJax components that ``tex-chtml.js`` already holds (its ``preLoad`` list): MathJax never
+#: fetches them, since they are loaded with it (1 MB of second copies).
+MATHJAX_BUNDLED = ("loader.js", "startup.js", "core.js", "output/chtml.js", "output/chtml/fonts/tex.js",
+                   "ui/menu.js", "a11y/assistive-mml.js",
+                   *(f"input/tex/extensions/{name}.js" for name in
+                     ("ams", "newcommand", "noundefined", "require", "autoload", "configmacros")))
 #: Site files (globs relative to the site root) that no page loads.
 UNUSED = ("_static/scripts/fontawesome.js", "_static/scripts/fontawesome.js.LICENSE.txt",
           "_static/vendor/fontawesome/webfonts/*.ttf", "_sources/**/*.md",
           "vendor/mathjax/input/tex-full.js", "vendor/mathjax/input/tex-base.js", "vendor/mathjax/input/tex.js",
-          "vendor/mathjax/input/asciimath.js", "vendor/mathjax/input/mml.js", "vendor/mathjax/input/mml")
+          "vendor/mathjax/input/asciimath.js", "vendor/mathjax/input/mml.js", "vendor/mathjax/input/mml",
+          *(f"vendor/html-manager/*.{ext}" for ext in LEGACY_FONTS),
+          *(f"vendor/mathjax/{name}" for name in MATHJAX_BUNDLED))
 #: MathJax speech-rule files kept (English speech, Nemeth braille, the shared base).
 MATHMAPS_KEPT = ("base.json", "en.json", "nemeth.json")
 _FA_SCRIPT = re.compile(r'<script defer src="[^"]*_static/scripts/fontawesome\.js[^"]*"></script>\s*')
