@@ -154,3 +154,57 @@ def test_the_root_sandbox_makes_every_folder_above_a_bind_readable_also_under_it
     dirs = [made[i + 3] for i in range(0, len(made), 4)]
     assert made[:4] == ["--perms", "0755", "--dir", "/tmp/ci.x"]
     assert dirs == ["/tmp/ci.x", "/tmp/ci.x/p"]           # not /tmp itself, nothing under the bound /usr
+
+
+def test_a_lab_named_in_capitals_is_still_its_students(tmp_path):
+    """Attack A18b: ``Alice_Lab1.ipynb`` was `unidentified` (its personal tasks 0) although ids are
+    case-insensitive; ``labN`` is too, in a file name and under a student's folder."""
+    from balancelab.course.intake import identity, lab_sources
+
+    for name in ("Alice_Lab1.ipynb", "ALICE_LAB1.ipynb", "alice/Lab1.ipynb", "Alice/LAB1.ipynb"):
+        sid, how = identity(name, None)
+        assert sid.lower() == "alice" and how in ("file name", "folder name"), (name, sid, how)
+        assert lab_sources({}, Path(name))[0] == "lab1"
+
+
+def test_a_roster_saved_by_a_spreadsheet_is_read(tmp_path):
+    """Attack A22: a roster with Excel's byte-order mark and CRLF, and ``./`` before a path."""
+    from balancelab.course.intake import read_roster
+
+    p = tmp_path / "roster.csv"
+    p.write_bytes(b"\xef\xbb\xbffile,student_id\r\neve_lab1.ipynb,eve\r\n./bob/lab1.ipynb,bob\r\n")
+    assert read_roster(p) == {"eve_lab1.ipynb": "eve", "bob/lab1.ipynb": "bob"}
+
+
+def test_a_cell_the_grader_cannot_parse_is_no_crash_and_a_failed_row_keeps_its_lab(tmp_path):
+    """Attack A18b: a lone surrogate in a code cell made the grader fail with a row of no lab and
+    no points (a table's percentage divided by 0)."""
+    from balancelab.course.grading import _failed_row
+    from balancelab.course.intake import cheat_notes
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("x = '\ud800'\nprint(x)")])
+    assert cheat_notes(nb) == []
+    row = _failed_row("n5_lab1", tmp_path / "n5_lab1.ipynb", None, UnicodeEncodeError("utf-8", "", 0, 1, "x"))
+    lab1 = {t.id: t.points for t in tasks("lab1")}
+    assert row.lab == "lab1" and row.status == "error" and row.total == 0
+    assert row.max_total == sum(lab1.values()) > 0
+
+
+def test_the_grader_refuses_a_derive_shortcut_as_the_notebook_does():
+    """Attack A21: a 2.2 or 4.5 cell that calls the library's solver was refused by the notebook's
+    ``check`` but scored by the grader. Both now read the checking cell the same way; the
+    solutions, derived by hand, are refused nothing."""
+    from balancelab.course.check.derive import SHORTCUTS
+    from balancelab.course.grading import derive_refusals
+
+    root = Path(__file__).resolve().parents[1] / "labs"
+    for sol in sorted((root / "solutions").glob("lab*.ipynb")):
+        assert derive_refusals(nbformat.read(sol, as_version=4), sol.stem.split("_")[0]) == {}, sol.name
+    derive = [t for t in tasks() if t.skill == "derive" and t.id in SHORTCUTS]
+    assert derive, "no derive task has shortcuts"
+    for t in derive:
+        student = next((root / "student").glob(f"{t.lab}_*.ipynb"))
+        nb = nbformat.read(student, as_version=4)
+        cell = next(c for c in nb.cells if c.cell_type == "code" and f'check("{t.id}"' in c.source)
+        cell.source = f"_ = {SHORTCUTS[t.id][0]}\n" + cell.source
+        assert derive_refusals(nb, t.lab) == {t.id: [SHORTCUTS[t.id][0]]}

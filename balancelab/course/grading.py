@@ -61,7 +61,7 @@ from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, lab_
 from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, precompile_package, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
-__all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook",
+__all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook", "derive_refusals",
            "grade_folder", "shard", "write_csv", "read_csv", "merge_csv", "summary", "main"]
 
 
@@ -313,6 +313,10 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     scores = {tid: min(max(v, 0.0), points[tid]) if v == v else 0.0 for tid, v in scores.items()}
     messages = {tid: ("✔ " if results[tid].get("correct") else "✘ ") + excerpt(results[tid].get("message", ""), 200)
                 for tid in points if tid in results}
+    for tid, found in derive_refusals(nb, lb).items():  # as the notebook's own check refuses them
+        scores[tid] = 0.0
+        messages[tid] = (f"✘ Task {tid} is to be derived by hand, and the cell that checks it calls "
+                         f"{', '.join(found)}")
     peak = extra.get("peak")
     return GradeRow(student, lb, status, scores, points, "; ".join(notes), messages, mismatch,
                     round(time.monotonic() - start, 2), round(peak / 2 ** 20, 1) if peak else None,
@@ -349,6 +353,59 @@ def shard(files: list, spec: str | None) -> list:
         raise ValueError(f"shard must be 'i/n' with 1 <= i <= n, got {spec!r}")
     i, n = int(m.group(1)), int(m.group(2))
     return list(files)[i - 1::n]
+
+
+def derive_refusals(nb: dict, lab: str) -> dict[str, list[str]]:
+    """The derive tasks of ``lab`` whose checking cell calls a library shortcut, and the names it calls.
+
+    The grader applies the same rule as the notebook's :func:`~balancelab.course.check.check` (which
+    reads the running cell): the code cell holding ``check("n.m", ...)`` is read with
+    :func:`~balancelab.course.check.derive.shortcuts`.
+
+    Parameters
+    ----------
+    nb : dict
+        The submitted notebook.
+    lab : str
+        ``"lab1"`` ...
+
+    Returns
+    -------
+    dict
+        Task id -> disallowed names found (only tasks with some).
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> cell = nbformat.v4.new_code_cell('a_y, k = d.balance_conditions()\\ncheck("2.2", (a_y, k))')
+    >>> derive_refusals(nbformat.v4.new_notebook(cells=[cell]), "lab2")
+    {'2.2': ['balance_conditions']}
+    """
+    from .check.derive import shortcuts
+
+    out: dict[str, list[str]] = {}
+    derive = [t.id for t in _check.tasks(lab) if getattr(t, "skill", None) == "derive"]
+    for cell in nb.get("cells", []) if isinstance(nb, dict) else []:
+        if not isinstance(cell, dict) or cell.get("cell_type") != "code":
+            continue
+        src = cell.get("source", "")
+        src = src if isinstance(src, str) else "".join(s for s in src if isinstance(s, str))
+        for tid in derive:
+            if re.search(r"""\bcheck\(\s*["']""" + re.escape(tid) + r"""["']""", src):
+                found = shortcuts(tid, src)
+                if found:
+                    out.setdefault(tid, []).extend(n for n in found if n not in out.get(tid, []))
+    return out
+
+
+def _failed_row(name: str, path: Path, lab: str | None, error: Exception) -> GradeRow:
+    """The row of a notebook the grader failed on: its lab (from ``--lab`` or the file name) and that
+    lab's points, all 0, so that a table's percentages stay defined."""
+    forced, from_name = lab_sources({}, path, lab)[2], lab_sources({}, path, lab)[0]
+    lb = forced or from_name or ""
+    points = {t.id: float(t.points) for t in _check.tasks(lb)} if lb in {t.lab for t in _check.tasks()} else {}
+    return GradeRow(name, lb, "error", {t: 0.0 for t in points}, points,
+                    notes=f"the grader failed on this notebook ({type(error).__name__}); scores 0")
 
 
 def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
@@ -412,7 +469,7 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
             row = grade_notebook(p, lab=lab, cell_timeout=cell_timeout, notebook_timeout=notebook_timeout,
                                  student=name, student_id=sid, sandbox=sandbox, caps=caps, id_source=how)
         except Exception as e:  # never stop the batch
-            row = GradeRow(name, "", "error", notes=f"the grader failed on this notebook ({type(e).__name__})")
+            row = _failed_row(name, p, lab, e)
         if progress:
             print(f"graded {excerpt(name, 80)}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
         return row

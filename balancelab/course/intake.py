@@ -26,7 +26,7 @@ __all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "re
 #: Largest notebook file read (bytes).
 MAX_NOTEBOOK = 20 * 2 ** 20
 #: The student id in a file name: ``ID_labN.ipynb`` or ``ID/labN....ipynb`` (letters, digits, ``.-``).
-ID_PATTERN = re.compile(r"^(?P<id>[A-Za-z0-9][A-Za-z0-9.\-]{0,62})_lab\d+(?:_[^/]*)?\.ipynb$")
+ID_PATTERN = re.compile(r"^(?P<id>[A-Za-z0-9][A-Za-z0-9.\-]{0,62})_(?i:lab)\d+(?:_[^/]*)?\.ipynb$")
 _DIR_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9.\-_]{0,62}$")
 
 
@@ -137,14 +137,22 @@ def read_roster(path: str | Path) -> dict[str, str]:
     >>> _ = p.write_text("file,student_id\\nalice_lab2.ipynb,s1001\\n")
     >>> read_roster(p)
     {'alice_lab2.ipynb': 's1001'}
+
+    A spreadsheet's byte-order mark and ``./`` before a path are read as nothing:
+
+    >>> _ = p.write_bytes(b"\\xef\\xbb\\xbffile,student_id\\r\\n./bob/lab2.ipynb,s1002\\r\\n")
+    >>> read_roster(p)
+    {'bob/lab2.ipynb': 's1002'}
     """
     out: dict[str, str] = {}
-    with Path(path).open(newline="", encoding="utf-8") as f:
+    with Path(path).open(newline="", encoding="utf-8-sig") as f:  # -sig: Excel's "CSV UTF-8" starts with a BOM
         reader = csv.DictReader(f)
         if not reader.fieldnames or not {"file", "student_id"} <= set(reader.fieldnames):
             raise ValueError(f"roster {path} must have the columns 'file' and 'student_id'")
         for rec in reader:
             name, sid = (rec.get("file") or "").strip(), (rec.get("student_id") or "").strip()
+            while name.startswith("./"):
+                name = name[2:]
             if not name or not sid:
                 continue
             if name in out:
@@ -177,6 +185,8 @@ def identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
 
     >>> identity("Alice_lab2.ipynb", None)[0] == identity("ALICE/lab2.ipynb", None)[0] == "alice"
     True
+    >>> [identity(name, None)[0] for name in ("Alice_Lab2.ipynb", "ALICE_LAB2.ipynb", "Kim/Lab2.ipynb")]
+    ['alice', 'alice', 'kim']
     >>> identity("s1234/lab2.ipynb", None)
     ('s1234', 'folder name')
 
@@ -207,7 +217,7 @@ def _identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
                                "check whose it is")
     if m:
         return m.group("id"), "file name"
-    if folder is not None and re.match(r"^lab\d+", parts[-1]):
+    if folder is not None and re.match(r"^lab\d+", parts[-1], re.IGNORECASE):
         return folder, "folder name"
     return "", "the file name does not match ID_labN.ipynb or ID/labN.ipynb"
 
@@ -321,7 +331,7 @@ def cheat_notes(nb) -> list[str]:
         src = src if isinstance(src, str) else "".join(src)
         try:
             tree = ast.parse("\n".join(ln for ln in src.splitlines() if not ln.lstrip().startswith(("%", "!"))))
-        except SyntaxError:
+        except (SyntaxError, ValueError):  # ValueError: a lone surrogate or NUL that cannot be compiled
             continue
         for node in ast.walk(tree):
             targets = (node.targets if isinstance(node, ast.Assign) else [node.target]
