@@ -704,3 +704,37 @@ def test_a_misplaced_eyelet_gives_the_cable_path_of_the_cut_part_even_past_the_p
         got = prof.path_from(theta, anchor)
         want = polyline_path(pts, theta, anchor, s.b.point, prof.turn)
         assert np.allclose(got, want, rtol=0, atol=1e-7), shift
+
+
+# --- issue 25, A25: the narrowest range the synthesis resolves ----------------------------------------------------
+
+def _circumradii(profile, x, step=1e-3):
+    """Radius (m) of the circle through the profile's points at parameters x - step, x, x + step: geometry
+    of the curve itself, independent of the support function's derivatives."""
+    a, b, c = (profile.local_points(x + d) for d in (-step, 0.0, step))
+    ab, bc, ca = (np.hypot(*(q - p).T) for p, q in ((a, b), (b, c), (c, a)))
+    twice_area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+    return ab * bc * ca / (2 * np.abs(twice_area))
+
+
+@pytest.mark.parametrize("centre", [-0.5, 0.0, 0.5])
+def test_just_above_the_narrowest_range_the_curvature_is_the_curves(lever, centre):
+    from balancelab.methods.realize.noncircular import MIN_ANGLE_RANGE
+
+    spring = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
+    d = bl.realize.noncircular_pulley(lever, spring_model=spring, eyelet=(0.0, 0.3),
+                                      angle_range=(centre, centre + 1.001 * MIN_ANGLE_RANGE))
+    assert d.balance_report().balanced
+    profile = d.springs[0].cable
+    x = np.linspace(-0.999, 0.999, 41)
+    np.testing.assert_allclose(profile.radius_of_curvature(x), _circumradii(profile, x), rtol=1e-3)
+
+
+@pytest.mark.parametrize("width", [0.999, 0.5, 0.0573, 1e-4])   # in units of the narrowest range; 0.0573 = 1 mrad
+def test_below_the_narrowest_range_a_named_error(lever, width):
+    from balancelab.methods.realize.noncircular import MIN_ANGLE_RANGE
+
+    spring = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0)
+    with pytest.raises(ValueError, match=r"angle_range must span at least 1° \(0\.01745 rad\)"):
+        bl.realize.noncircular_pulley(lever, spring_model=spring, eyelet=(0.0, 0.3),
+                                      angle_range=(0.5, 0.5 + width * MIN_ANGLE_RANGE))

@@ -9,8 +9,13 @@ tangent from the eyelet, then the polyline's length to the clamp), and asks
 * is the link balanced: the load's energy plus the spring's, ``k/2 u^2`` with the stretch
   ``u`` from that path, constant to :data:`LAB9_TOLERANCE` of what the load exchanges;
 * does the part fit: every point within :data:`LAB9_MAX_RADIUS` of the axle;
-* can the cable wrap it: the polyline turns one way only and its radius of curvature is at
-  least :data:`LAB9_MIN_CURVATURE` (ten diameters of a 1.2 mm cable) everywhere;
+* can the cable wrap it: the polyline turns one way only, the cable's way (``turn``) towards the
+  clamped end, and its radius of curvature is at least :data:`LAB9_MIN_CURVATURE` (ten diameters
+  of a 1.2 mm cable) everywhere;
+* does the cable wrap it: over the range the tangent point travels along the polyline by at
+  least :data:`LAB9_MIN_WRAP` of its length (the wrapped length changes by that much). A cable
+  that runs straight from the eyelet to the clamp at every angle, past points it never touches,
+  is an eyelet, not a pulley;
 * does the spring survive: taut (tension at least its initial tension) and within the allowable
   force of its body and hooks over the whole range.
 
@@ -29,12 +34,12 @@ import numpy as np
 
 from ...core.elements import G
 from ...methods.practice.springs import ExtensionSpring
-from ...methods.realize.profile_check import polyline_path
+from ...methods.realize.profile_check import polyline_path, polyline_wrap
 from .answers import as_mapping, numeric, quantity, symbolic
 from .core import AnswerError, register_task
 
 __all__ = ["LAB9_LINK", "LAB9_EYELET", "LAB9_RANGE", "LAB9_MAX_RADIUS", "LAB9_MIN_CURVATURE", "LAB9_TOLERANCE",
-           "LAB9_SPRING", "LAB9_MIN_TENSION", "lab9_spring", "pulley_problems", "pulley_energy_variation"]
+           "LAB9_MIN_WRAP", "LAB9_SPRING", "LAB9_MIN_TENSION", "lab9_spring", "pulley_problems", "pulley_energy_variation"]
 
 #: The published link: ``mass`` (kg) at ``length`` (m) from the pivot (chapter 9's link).
 LAB9_LINK = dict(mass=2.0, length=0.5)
@@ -46,6 +51,9 @@ LAB9_RANGE = (-math.pi / 3, math.pi / 3)
 LAB9_MAX_RADIUS = 0.15
 #: Smallest radius of curvature a 1.2 mm cable accepts (m): ten cable diameters.
 LAB9_MIN_CURVATURE = 0.012
+#: Smallest travel of the cable's tangent point along the submitted curve over the range, as a
+#: fraction of the curve's length: the wrapped length must change by at least this much.
+LAB9_MIN_WRAP = 0.5
 #: Largest relative energy variation accepted (of the energy the load exchanges over the range).
 LAB9_TOLERANCE = 1e-3
 #: Task 9.2's spring, chapter 9's stock spring: wire, coil (m), active coils, initial tension (N).
@@ -133,6 +141,18 @@ def _curvature_radii(pts: np.ndarray) -> np.ndarray:
         return ab * bc * ca / (2 * twice_area)
 
 
+def _wrap_problems(pts: np.ndarray, turn: int) -> list[str]:
+    """Why the cable does not wrap the curve over the range (empty when it does, :data:`LAB9_MIN_WRAP`)."""
+    _, wrapped = polyline_wrap(pts, np.linspace(*LAB9_RANGE, _ANGLES), LAB9_EYELET, pts[-1], turn)
+    length = float(np.hypot(*np.diff(pts, axis=0).T).sum())
+    travel = float(np.ptp(wrapped))
+    if travel >= LAB9_MIN_WRAP * length:
+        return []
+    return [f"the cable does not wrap it: over ±60° its tangent point travels {1000 * travel:.1f} mm along the "
+            f"{1000 * length:.1f} mm curve, less than the {100 * LAB9_MIN_WRAP:.0f} % required (a cable that runs "
+            f"straight from the eyelet to the clamp is an eyelet, not a pulley)"]
+
+
 def pulley_energy_variation(answer: Mapping[str, Any], load: Mapping[str, float]) -> tuple[float, np.ndarray]:
     """Relative energy variation of the link with the submitted pulley, and the cable's tensions (N).
 
@@ -169,7 +189,7 @@ def pulley_problems(answer: Mapping[str, Any]) -> list[str]:
     -------
     list of str
     """
-    spring, pts, _, _ = _read(answer)
+    spring, pts, _, turn = _read(answer)
     problems = []
     far = float(np.hypot(*pts.T).max())
     if far > LAB9_MAX_RADIUS * (1 + 1e-9):
@@ -177,9 +197,15 @@ def pulley_problems(answer: Mapping[str, Any]) -> list[str]:
     radii = _curvature_radii(pts)
     if not (np.all(radii > 0) or np.all(radii < 0)):
         problems.append("the curve is not convex (it turns both ways): a cable cannot wrap a concave arc")
-    elif np.abs(radii).min() < LAB9_MIN_CURVATURE:
-        problems.append(f"its smallest radius of curvature is {1000 * np.abs(radii).min():.1f} mm "
-                        f"(the cable needs {1000 * LAB9_MIN_CURVATURE:.0f} mm)")
+    else:
+        if np.abs(radii).min() < LAB9_MIN_CURVATURE:
+            problems.append(f"its smallest radius of curvature is {1000 * np.abs(radii).min():.1f} mm "
+                            f"(the cable needs {1000 * LAB9_MIN_CURVATURE:.0f} mm)")
+        if np.sign(radii[0]) != turn:
+            problems.append(f"followed to the clamped end (the last point) the curve turns the other way than the "
+                            f"cable (turn = {turn}): the cable would cut across its hollow side")
+        else:
+            problems.extend(_wrap_problems(pts, turn))
     lo, hi = spring.initial_tension_range()
     if not lo * (1 - 1e-6) <= spring.initial_tension <= hi * (1 + 1e-6):
         problems.append("the spring's initial tension is outside what can be wound for its index")
@@ -189,15 +215,20 @@ def pulley_problems(answer: Mapping[str, Any]) -> list[str]:
 @register_task("9.1", "a non-circular pulley and a spring that balance your link within the limits (open design)",
                "my_pulley", "design", "a dict {'spring': " + _SPRING_FORM + ", 'points': the pitch curve in the "
                "link's frame (m, 50 to 500 points, the cable's clamped end last), 'cable_length': m, "
-               "'turn': 1 or -1}; every point within 150 mm of the axle, convex, radius of curvature >= 12 mm, "
+               "'turn': 1 or -1}; every point within 150 mm of the axle, convex and turning the cable's way towards "
+               "the clamped end, radius of curvature >= 12 mm, wrapped by the cable (over ±60° the tangent point "
+               "travels along at least half of the curve), "
                "the spring taut and within its allowable force; the energy constant to 0.1 % with your link "
                "(task_numbers('9.1'))", points=2, numbers=_link_numbers,
                distinct=(lambda load: load["mass"] * load["length"], 0.03))
 def _t91(answer, load):
     problems = pulley_problems(answer)
     if problems:
-        return False, "The pulley cannot be built: " + "; ".join(problems) + ".", \
-            "Move the smallest tension, the spring or the eyelet side and build it again."
+        hint = "Move the smallest tension, the spring or the eyelet side and build it again."
+        if any("cable" in p for p in problems):
+            hint = ("Submit the pitch curve of bl.realize.profile_part(design) for a design of "
+                    "bl.realize.noncircular_pulley, the clamped end last, with the design's turn.")
+        return False, "The pulley cannot be built: " + "; ".join(problems) + ".", hint
     spring = lab9_spring(answer["spring"])
     variation, tension = pulley_energy_variation(answer, load)
     if not math.isfinite(variation) or variation > LAB9_TOLERANCE:
@@ -209,7 +240,7 @@ def _t91(answer, load):
             "Raise the smallest tension."
     if tension.max() > spring.max_force():
         return False, "The spring is overstressed at its longest stretch.", "A stronger spring, or a lower tension."
-    return True, ("Balanced, within 150 mm of the axle, wrappable by the cable, and the spring stays taut and within "
+    return True, ("Balanced, within 150 mm of the axle, wrapped by the cable, and the spring stays taut and within "
                   "its allowable force."), ""
 
 

@@ -38,7 +38,7 @@ from ..practice.springs import ExtensionSpring
 from .noncircular_synthesis import DEGREES, at_floor, choose_turn, pivot_inside, search_tension
 from .profile import NoncircularProfile, ProfileError
 
-__all__ = ["noncircular_pulley", "spring_limits", "ProfileError"]
+__all__ = ["MIN_ANGLE_RANGE", "noncircular_pulley", "spring_limits", "ProfileError"]
 
 
 
@@ -109,10 +109,19 @@ def _linkage_size(design: Design, eyelet) -> float:
     return max([math.hypot(*eyelet)] + [math.hypot(*p) for p in points])
 
 
+#: Narrowest ``angle_range`` (rad) a profile is synthesized for, 1°: the radius of curvature divides
+#: round-off by the square of the range, and below about 1 mrad it is wrong by tens of millimetres.
+MIN_ANGLE_RANGE = math.radians(1.0)
+
+
 def _angle_range(design: Design, angle_range, coordinate: int) -> tuple[float, float]:
     lo, hi = design.q_range[coordinate] if angle_range is None else finite_reals("angle_range (lo, hi, rad)", angle_range, 2)
     if not lo < hi:
         raise ValueError(f"angle_range must have lo < hi (rad), got ({lo}, {hi})")
+    if hi - lo < MIN_ANGLE_RANGE:
+        raise ValueError(f"angle_range must span at least {math.degrees(MIN_ANGLE_RANGE):.0f}° ({MIN_ANGLE_RANGE:.4g} rad) "
+                         f"and less than 180°, got {hi - lo:.3g} rad: over a narrower range the profile's curvature "
+                         "(second derivatives in the link angle) drowns in round-off")
     if hi - lo >= math.pi:
         raise ValueError(f"angle_range must span less than 180° (the cable's line turns with the link), "
                          f"got {math.degrees(hi - lo):.1f}°" + (" (the design's whole range: pass angle_range=(lo, hi))"
@@ -208,7 +217,8 @@ def noncircular_pulley(design: Design, spring: int = 0, *, spring_model: Extensi
         The real spring (:mod:`balancelab.methods.practice.springs`): its rate, initial
         tension and body length; ``free_length`` of the result is its equivalent free length.
     angle_range : (float, float), optional
-        Angles of the body (its coordinate, rad) covered, ``lo < hi``, less than 180° apart;
+        Angles of the body (its coordinate, rad) covered, ``lo < hi``, at least 1°
+        (:data:`MIN_ANGLE_RANGE`) and less than 180° apart;
         default that coordinate's range in the design.
     min_tension : float, optional
         Smallest cable tension over the range (N), at least the initial tension; by default

@@ -25,7 +25,7 @@ from ...core.design import Design
 from ...core.frames import rotate
 from .profile import NoncircularProfile
 
-__all__ = ["polyline_path", "polyline_variation"]
+__all__ = ["polyline_path", "polyline_variation", "polyline_wrap"]
 
 #: link angles (evenly spaced, both ends included) at which an exported polyline is checked
 ANGLES = 501
@@ -51,6 +51,7 @@ def polyline_path(points, theta, anchor, clamp, turn: int) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (m,)
+        The straight run plus the wrapped length of :func:`polyline_wrap`.
 
     Examples
     --------
@@ -63,12 +64,50 @@ def polyline_path(points, theta, anchor, clamp, turn: int) -> np.ndarray:
     >>> round(got, 4), round(math.sqrt(8) + math.pi - math.acos(1 / 3), 4)
     (4.7391, 4.7391)
     """
+    straight, wrapped = polyline_wrap(points, theta, anchor, clamp, turn)
+    return straight + wrapped
+
+
+def polyline_wrap(points, theta, anchor, clamp, turn: int) -> tuple[np.ndarray, np.ndarray]:
+    """The cable's straight run from the eyelet and its length wrapped on the polyline (m), at link angles ``theta``.
+
+    The tangent vertex is the vertex where the line from the eyelet touches the polyline with
+    the whole polyline on the wrap's side; the cable lies on the polyline from there to the
+    clamp's end. A cable that runs straight from the eyelet to the clamp's end wraps 0 m.
+
+    Parameters
+    ----------
+    points, theta, anchor, clamp, turn
+        As in :func:`polyline_path`.
+
+    Returns
+    -------
+    (numpy.ndarray, numpy.ndarray), each of shape (m,)
+        The eyelet-to-tangent-vertex distance and the polyline's length from that vertex to
+        the clamp's end.
+
+    Examples
+    --------
+    The unit circle of :func:`polyline_path`: the tangent ``sqrt(8)``, the arc ``pi - acos(1/3)``
+    (to the polyline's accuracy, 2,000 points); the quarter below the x-axis, clamped at (1, 0),
+    lies beside the straight line from the eyelet to its clamped end: the cable wraps nothing:
+
+    >>> phi = np.linspace(-np.pi / 2, np.pi, 2000)
+    >>> circle = np.column_stack([np.cos(phi), np.sin(phi)])
+    >>> straight, wrapped = polyline_wrap(circle, [0.0], (3.0, 0.0), (-1.0, 0.0), 1)
+    >>> round(float(straight[0]), 2), round(float(wrapped[0]), 2), round(math.pi - math.acos(1 / 3), 2)
+    (2.83, 1.91, 1.91)
+    >>> quarter = circle[phi <= 0]
+    >>> straight, wrapped = polyline_wrap(quarter, [0.0], (3.0, 0.0), (1.0, 0.0), 1)
+    >>> round(float(straight[0]), 4), float(wrapped[0])
+    (2.0, 0.0)
+    """
     pts = np.asarray(points, dtype=float)
     if np.hypot(*(pts[0] - clamp)) < np.hypot(*(pts[-1] - clamp)):
         pts = pts[::-1]                                   # the clamp's end last
     cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
     theta = np.atleast_1d(np.asarray(theta, dtype=float))
-    out = np.empty(len(theta))
+    straight, wrapped = np.empty(len(theta)), np.empty(len(theta))
     for start in range(0, len(theta), 32):          # 32 angles at a time: (32, n, 2) arrays
         t = theta[start:start + 32, None]
         world = np.stack(rotate(np, t, (pts[:, 0], pts[:, 1])), -1)
@@ -80,8 +119,9 @@ def polyline_path(points, theta, anchor, clamp, turn: int) -> np.ndarray:
         ang = np.arctan2(r0[..., 0] * rel[..., 1] - r0[..., 1] * rel[..., 0], np.sum(r0 * rel, -1))
         vertex = np.argmin(turn * ang, axis=1)
         rows = np.arange(len(t))
-        out[start:start + 32] = np.hypot(*rel[rows, vertex].T) + cum[-1] - cum[vertex]
-    return out
+        straight[start:start + 32] = np.hypot(*rel[rows, vertex].T)
+        wrapped[start:start + 32] = cum[-1] - cum[vertex]
+    return straight, wrapped
 
 
 def _coordinate(design: Design, body: int) -> int:
