@@ -33,7 +33,7 @@ if TYPE_CHECKING:
     from .design import Design
 
 __all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
+           "balance_report", "balanced_at", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
            "q_meaning", "reference_point", "energy_change"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
@@ -509,6 +509,37 @@ def _closure_allowance(design, poses, spring_energies) -> float:
     return CLOSURE_FACTOR * gap * forces
 
 
+def _verdict(design: Design, q: np.ndarray, tolerance: float):
+    """``(total energy, scale, roundoff, yardstick, null set's weight, balanced)`` at the configurations ``q``."""
+    poses = design.poses(q)  # once: the energies and the closure allowance both need them
+    vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
+    total = vl.sum(-1) + vs.sum(-1)
+    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
+    if scale == 0.0:
+        raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
+                         "so there is nothing to balance")
+    summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
+    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, poses, vs)
+    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
+    balanced = bool(float(np.ptp(total)) <= tolerance * yardstick + roundoff
+                    and not roundoff > MAX_ROUND_OFF_RATIO * tolerance * yardstick)
+    return total, scale, roundoff, yardstick, null_weight, balanced
+
+
+def balanced_at(design: Design, q: ArrayLike, tolerance: float = BALANCE_TOLERANCE) -> bool:
+    """The verdict of :func:`balance_report` at the configurations ``q`` (rad or m), without its
+    ``dV/dq`` readout: the one yardstick the balancer uses too (a design balanced already needs nothing).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    >>> balanced_at(d, d.sample(50))
+    True
+    """
+    return _verdict(design, design.check_q(q).reshape(-1, design.dof), check_tolerance(tolerance))[-1]
+
+
 def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                    tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
     """The :class:`BalanceReport` of ``design`` (see :meth:`balancelab.Design.balance_report`).
@@ -521,25 +552,14 @@ def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000,
     """
     tolerance = check_tolerance(tolerance)
     q = _configurations(design, q, n, seed)
-    poses = design.poses(q)  # once: the energies and the closure allowance both need them
-    vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
-    total = vl.sum(-1) + vs.sum(-1)
-    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
-    if scale == 0.0:
-        raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
-                         "so there is nothing to balance")
+    total, scale, roundoff, yardstick, null_weight, balanced = _verdict(design, q, tolerance)
     spread = float(np.ptp(total))
-    summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
-    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, poses, vs)
-    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
-
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)) - float(np.sum(design._lf @ design._ref)),  # about the origin
                          worst_q=q[worst].copy(),
-                         balanced=bool(spread <= tolerance * yardstick + roundoff
-                                       and not roundoff > MAX_ROUND_OFF_RATIO * tolerance * yardstick),
+                         balanced=balanced,
                          tolerance=tolerance, n=len(q), load_scale=yardstick, load_variation=spread / yardstick,
                          q_units=q_units(design), cancelled=null_weight, roundoff=roundoff)
