@@ -34,7 +34,7 @@ if TYPE_CHECKING:
     from .design import Design
 
 __all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "balanced_at", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
+           "balance_report", "balanced_at", "roundoff_allowance", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
            "q_meaning", "reference_point", "energy_change"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
@@ -542,6 +542,20 @@ def _verdict(design: Design, q: np.ndarray, tolerance: float):
         smooth, rest = smooth_split(poses, q, q_units(design), total)
         balanced = smooth <= bound and rest <= bound + roundoff
     return total, scale, roundoff, yardstick, null_weight, balanced, smooth
+
+
+def roundoff_allowance(design: Design, q: ArrayLike) -> float:
+    """The round-off allowance (J) of the verdict of ``design`` at the configurations ``q``
+    (:attr:`BalanceReport.roundoff`: the summing round-off and a closed loop's solving error).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    >>> roundoff_allowance(d, d.sample(50)) < 1e-12
+    True
+    """
+    return _verdict(design, design.check_q(q).reshape(-1, design.dof), BALANCE_TOLERANCE)[2]
 
 
 def balanced_at(design: Design, q: ArrayLike, tolerance: float = BALANCE_TOLERANCE) -> bool:
