@@ -493,22 +493,37 @@ class Design(SymbolicMethods):
         out[0] = out[1] + out[2]
         return Energy(*(row.reshape(lead) for row in out))
 
-    def generalized_force(self, q: ArrayLike, h: float = 1e-6) -> np.ndarray:
-        """``dV/dq`` (J/rad) by central differences, shape ``(..., dof)``.
+    def generalized_force(self, q: ArrayLike, h: float | None = None) -> np.ndarray:
+        """``dV/dq`` (J/rad for an angle, N for a slide) by central differences, shape ``(..., dof)``.
 
         Near a limit of the range a one-sided difference is used.
 
         Parameters
         ----------
         q : array_like, shape (..., dof)
-        h : float
-            Step (rad), in ``(0, 0.1]``.
+        h : float, optional
+            Step (rad for angles, m for slides) for every coordinate, in ``(0, 0.1]``. By default
+            angles step by ``1e-6`` rad and a slide by ``1e-6`` of its range (:meth:`difference_steps`),
+            so a micrometre stroke is differenced as finely as a metre one.
 
         Returns
         -------
         numpy.ndarray
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> lk = bl.Linkage("block")
+        >>> _ = lk.prismatic("ground", (0, 0), "block", (0, 0), axis=(1, 0), stroke=(-1e-6, 1e-6))
+        >>> _ = lk.load("block", (3.0, 0.0))
+        >>> bool(abs(lk.build().generalized_force([0.0])[0] + 3.0) < 1e-6)   # dV/ds = -F_x (N)
+        True
         """
-        q, h = self.check_q(q), step_size(f"h (step, {'rad or m' if 'm' in _report.q_units(self) else 'rad'})", h, 0.1)
+        q = self.check_q(q)
+        if h is None:
+            steps = self.difference_steps()
+        else:
+            steps = np.full(self.dof, step_size(f"h (step, {'rad or m' if 'm' in _report.q_units(self) else 'rad'})", h, 0.1))
         flat = q.reshape(-1, self.dof)
 
         def energies(x: np.ndarray) -> np.ndarray:
@@ -517,7 +532,33 @@ class Design(SymbolicMethods):
             vl, vs = self._element_energies(self._checked_poses(x)[0])
             return np.array(list(vl) + list(vs), dtype=float).reshape(-1, len(x))
 
-        return central_difference(energies, self.reachable, flat, h).sum(0).reshape(q.shape)
+        return central_difference(energies, self.reachable, flat, steps).sum(0).reshape(q.shape)
+
+    def difference_steps(self, relative: float = 1e-6) -> np.ndarray:
+        """Default finite-difference step of each coordinate, shape ``(dof,)``.
+
+        ``relative`` rad for an angle; ``relative`` times the slide's range (m) for a slide, so
+        the step scales with the design (a 1 um stroke gets a 1e-12 m step).
+
+        Parameters
+        ----------
+        relative : float
+            Step of an angle (rad) and fraction of a slide's range, in ``(0, 0.1]``.
+
+        Returns
+        -------
+        numpy.ndarray
+
+        Examples
+        --------
+        >>> import balancelab as bl
+        >>> bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3).difference_steps().tolist()
+        [1e-06]
+        """
+        relative = step_size("relative (step)", relative, 0.1)
+        span = np.diff(np.asarray(self.q_range, dtype=float), axis=1)[:, 0]
+        slide = np.array([u == "m" for u in _report.q_units(self)]) & np.isfinite(span) & (span > 0)
+        return np.where(slide, relative * np.where(slide, span, 1.0), relative)
 
     def balance_report(self, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                        tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:

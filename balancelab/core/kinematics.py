@@ -67,7 +67,7 @@ def joint_gaps(poses: np.ndarray, joints: Sequence) -> np.ndarray:
 
 
 def central_difference(value: Callable[[np.ndarray], np.ndarray], reachable: Callable[[np.ndarray], np.ndarray],
-                       q: np.ndarray, h: float) -> np.ndarray:
+                       q: np.ndarray, h: float | np.ndarray) -> np.ndarray:
     """Derivative of ``value`` with respect to each configuration coordinate, shape ``(..., dof)``.
 
     The one finite-difference loop of balancelab: central differences ``(v(q + h e_i) -
@@ -83,8 +83,9 @@ def central_difference(value: Callable[[np.ndarray], np.ndarray], reachable: Cal
         ``reachable(q)``: boolean mask of shape ``(m,)``.
     q : numpy.ndarray, shape (m, dof)
         Configurations (rad for angles, m for slides), all reachable.
-    h : float
-        Step, > 0 (the caller checks it).
+    h : float or numpy.ndarray, shape (dof,)
+        Step (rad for angles, m for slides), > 0 (the caller checks it): one for every coordinate,
+        or one per coordinate.
 
     Returns
     -------
@@ -99,14 +100,15 @@ def central_difference(value: Callable[[np.ndarray], np.ndarray], reachable: Cal
     [1.0, 0.5403]
     """
     dof = q.shape[-1]
+    steps = np.broadcast_to(np.asarray(h, dtype=float), (dof,))
     out = []
     for i in range(dof):
         e = np.zeros(dof)
-        e[i] = h
+        e[i] = steps[i]
         okp, okm = reachable(q + e), reachable(q - e)
         vp = value(np.where(okp[..., None], q + e, q))
         vm = value(np.where(okm[..., None], q - e, q))
-        out.append((vp - vm) / (h * np.maximum(okp.astype(float) + okm.astype(float), 1.0)))
+        out.append((vp - vm) / (steps[i] * np.maximum(okp.astype(float) + okm.astype(float), 1.0)))
     return np.stack(out, -1)
 
 

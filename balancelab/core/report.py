@@ -27,13 +27,14 @@ from numpy.typing import ArrayLike
 
 from .cancel import EXACT, null_subset
 from .samples import check_spread
+from .smooth import smooth_split
 from .validation import positive_int
 
 if TYPE_CHECKING:
     from .design import Design
 
 __all__ = ["BALANCE_TOLERANCE", "MAX_ROUND_OFF_RATIO", "MIN_CONFIGURATIONS", "MIN_COVERAGE", "ROUND_OFF_ALLOWANCE", "Energy", "BalanceReport",
-           "balance_report", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
+           "balance_report", "balanced_at", "roundoff_allowance", "check_tolerance", "reachable_extent", "load_scale", "q_units", "q_shown", "format_q",
            "q_meaning", "reference_point", "energy_change"]
 
 #: Relative tolerance below which a design is reported balanced: the spread of its total
@@ -110,6 +111,11 @@ class BalanceReport:
         The round-off allowance of the verdict (J), :data:`ROUND_OFF_ALLOWANCE` times the energies
         summed. When it exceeds :data:`MAX_ROUND_OFF_RATIO` ``* tolerance * load_scale`` the
         verdict cannot be resolved and is NOT balanced (:attr:`resolvable` is False).
+    smooth_variation : float
+        When ``load_variation`` exceeds ``tolerance`` and only the round-off allowance covers the
+        excess: the spread of the energy's smooth part (:func:`~balancelab.core.smooth.smooth_split`)
+        over ``load_scale``; *balanced* then needs it within ``tolerance`` (the allowance covers noise,
+        never a real variation). NaN otherwise.
 
     Examples
     --------
@@ -132,6 +138,7 @@ class BalanceReport:
     q_units: tuple[str, ...] = ()
     cancelled: float = 0.0
     roundoff: float = 0.0
+    smooth_variation: float = math.nan
 
     @property
     def resolvable(self) -> bool:
@@ -150,9 +157,12 @@ class BalanceReport:
                       f" (cannot be resolved: the round-off of energies this large, {self.roundoff:.3g} J, "
                       f"exceeds {MAX_ROUND_OFF_RATIO:g} x tolerance x the loads' exchange; move the origin "
                       "near the mechanism, or remove elements that store energy without exchanging it)")
+        smooth = ("" if math.isnan(self.smooth_variation) else
+                  f", its smooth part by {self.smooth_variation:.2e} (the rest is round-off within "
+                  f"{self.roundoff:.3g} J)")
         return (f"{verdict}{unresolved}: energy varies by {self.variation:.2e} of its scale "
                 f"({self.scale:.4g} J) and by {self.load_variation:.2e} of the loads' "
-                f"({self.load_scale:.4g} J{left_out}) over {self.n} configurations; "
+                f"({self.load_scale:.4g} J{left_out}){smooth} over {self.n} configurations; "
                 f"largest residual dV/dq = {self.residual:.2e} × scale per {per} at q = ({q}); "
                 f"mean energy {self.energy:.6g} J")
 
@@ -509,6 +519,59 @@ def _closure_allowance(design, poses, spring_energies) -> float:
     return CLOSURE_FACTOR * gap * forces
 
 
+def _verdict(design: Design, q: np.ndarray, tolerance: float):
+    """``(total energy, scale, roundoff, yardstick, null set's weight, balanced, smooth part)`` at the
+    configurations ``q``. When the variation passes only thanks to the round-off allowance, the verdict
+    is that of its smooth part (:func:`~balancelab.core.smooth.smooth_split`: the allowance covers noise,
+    never a real variation); the smooth part's spread (J) is NaN when it was not needed."""
+    poses = design.poses(q)  # once: the energies and the closure allowance both need them
+    vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
+    total = vl.sum(-1) + vs.sum(-1)
+    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
+    if scale == 0.0:
+        raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
+                         "so there is nothing to balance")
+    summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
+    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, poses, vs)
+    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
+    bound = tolerance * yardstick
+    spread = float(np.ptp(total))
+    balanced = bool(spread <= bound + roundoff and not roundoff > MAX_ROUND_OFF_RATIO * bound)
+    smooth = math.nan
+    if balanced and spread > bound:  # only the allowance passes it: its smooth part must pass alone
+        smooth, rest = smooth_split(poses, q, q_units(design), total)
+        balanced = smooth <= bound and rest <= bound + roundoff
+    return total, scale, roundoff, yardstick, null_weight, balanced, smooth
+
+
+def roundoff_allowance(design: Design, q: ArrayLike) -> float:
+    """The round-off allowance (J) of the verdict of ``design`` at the configurations ``q``
+    (:attr:`BalanceReport.roundoff`: the summing round-off and a closed loop's solving error).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    >>> roundoff_allowance(d, d.sample(50)) < 1e-12
+    True
+    """
+    return _verdict(design, design.check_q(q).reshape(-1, design.dof), BALANCE_TOLERANCE)[2]
+
+
+def balanced_at(design: Design, q: ArrayLike, tolerance: float = BALANCE_TOLERANCE) -> bool:
+    """The verdict of :func:`balance_report` at the configurations ``q`` (rad or m), without its
+    ``dV/dq`` readout: the one yardstick the balancer uses too (a design balanced already needs nothing).
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.lacoste_lever(10.0, 0.5, 0.2, 0.3)
+    >>> balanced_at(d, d.sample(50))
+    True
+    """
+    return _verdict(design, design.check_q(q).reshape(-1, design.dof), check_tolerance(tolerance))[5]
+
+
 def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000, seed: int | None = 0,
                    tolerance: float = BALANCE_TOLERANCE) -> BalanceReport:
     """The :class:`BalanceReport` of ``design`` (see :meth:`balancelab.Design.balance_report`).
@@ -521,25 +584,15 @@ def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000,
     """
     tolerance = check_tolerance(tolerance)
     q = _configurations(design, q, n, seed)
-    poses = design.poses(q)  # once: the energies and the closure allowance both need them
-    vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
-    total = vl.sum(-1) + vs.sum(-1)
-    scale = float(np.sum(np.ptp(vl, axis=0)) + np.sum(np.ptp(vs, axis=0)))
-    if scale == 0.0:
-        raise ValueError(f"{design.name}: nothing in this design stores energy as it moves, "
-                         "so there is nothing to balance")
+    total, scale, roundoff, yardstick, null_weight, balanced, smooth = _verdict(design, q, tolerance)
     spread = float(np.ptp(total))
-    summed = np.sum(np.ptp(vl, axis=0)) + np.sum(np.max(vs, axis=0) if len(design.springs) else 0.0)
-    roundoff = ROUND_OFF_ALLOWANCE * float(summed) + _closure_allowance(design, poses, vs)
-    yardstick, null_weight = _yardstick(design, q, vl, scale, roundoff, vs, tolerance)
-
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
     worst = int(np.argmax(mag))
     return BalanceReport(variation=spread / scale, residual=float(mag[worst]) / scale, scale=scale,
                          energy=float(np.mean(total)) - float(np.sum(design._lf @ design._ref)),  # about the origin
                          worst_q=q[worst].copy(),
-                         balanced=bool(spread <= tolerance * yardstick + roundoff
-                                       and not roundoff > MAX_ROUND_OFF_RATIO * tolerance * yardstick),
+                         balanced=balanced,
                          tolerance=tolerance, n=len(q), load_scale=yardstick, load_variation=spread / yardstick,
-                         q_units=q_units(design), cancelled=null_weight, roundoff=roundoff)
+                         q_units=q_units(design), cancelled=null_weight, roundoff=roundoff,
+                         smooth_variation=smooth / yardstick)

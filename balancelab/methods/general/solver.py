@@ -16,7 +16,7 @@ import numpy as np
 
 from ...core.validation import MIN_POSITIVE
 from .problem import Problem, lp_constraints
-from .verdicts import infeasible
+from .verdicts import infeasible, smooth_within
 
 __all__ = ["OBJECTIVES", "Solution", "solve", "rank_of", "column_norms"]
 
@@ -229,7 +229,7 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
         x = _polish(p, S * y, U[:, :r])
         res = p.A @ x + p.v
         spread = float(np.ptp(res)) if len(res) else 0.0
-        if spread <= tol:
+        if spread <= tol or smooth_within(p, res, tol):
             break
     else:
         raise infeasible(p, D, objective, f"; the best solution leaves {spread:.3g} J")

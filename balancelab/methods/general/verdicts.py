@@ -22,9 +22,11 @@ from __future__ import annotations
 import numpy as np
 
 from ...core.errors import InfeasibleDesign
+from ...core.report import BALANCE_TOLERANCE, q_units, roundoff_allowance as allowance
+from ...core.smooth import smooth_split
 from .problem import Problem, harmonics, lp_constraints
 
-__all__ = ["VERDICTS", "infeasible", "nice_box", "limit"]
+__all__ = ["VERDICTS", "infeasible", "nice_box", "limit", "smooth_within"]
 
 #: the reasons a balance problem has no admissible solution (``"limit"``: a rate or mass beyond
 #: what a design may hold, see :func:`limit`)
@@ -89,6 +91,23 @@ def _signed(p: Problem, D: np.ndarray, lo: np.ndarray) -> np.ndarray:
     return x / D
 
 
+def smooth_within(p: Problem, residual: np.ndarray, tol: float) -> bool:
+    """Whether an energy ``residual`` (J) is noise: its smooth part (:func:`~balancelab.core.smooth.smooth_split`)
+    within ``tol`` and the rest within the report's tolerance, both up to the round-off the report allows
+    (:func:`~balancelab.core.report.roundoff_allowance`): a far origin's positions carry 1e-10 m of round-off, and a balance that holds at the
+    origin is not called impossible there. A solution accepted so is still checked by the report.
+
+    Examples
+    --------
+    Used by :func:`~balancelab.methods.general.solver.solve` and :func:`infeasible`.
+    """
+    if p.design is None or not len(residual):
+        return False
+    smooth, rest = smooth_split(p.poses, p.q, q_units(p.design), residual)
+    slack = allowance(p.design, p.q)  # the report's own allowance and tolerance for the noise: the report settles it
+    return smooth <= tol + slack and rest <= BALANCE_TOLERANCE * p.load_spread + slack
+
+
 def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> InfeasibleDesign:
     """The :class:`InfeasibleDesign` (with ``verdict``) of a problem that has no admissible solution.
 
@@ -109,7 +128,7 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     tol = 1e-10 * max(p.load_spread, 1e-300)
     free = np.linalg.lstsq(p.A / D, -p.v, rcond=1e-12)[0] / D
     unsigned = p.A @ free + p.v
-    if np.ptp(unsigned) > tol:
+    if np.ptp(unsigned) > tol and not smooth_within(p, unsigned, tol):
         return _error("impossible", head + "impossible for any rates: even with rates and masses of any sign "
                       f"they cannot make the energy constant; left over: {terms(p, unsigned)}")
     lo = _rates(p)
