@@ -627,6 +627,20 @@ def _parallelogram_by_hand(n):
     return (bl.G * (m1 * p1 + m2 * l) / (b1 * c1), bl.G * m2 * p2 / (b2 * c2))
 
 
+def _lift_by_hand(n):
+    # Singh eq. 55 with l10 = a: k1 a = g (m2/2 + m3/2 + 3 m5/2 + 3 m6/2 + 2 m7 + 2 m8), four arms of one
+    # mass, sliders m4 = m7, the platform and its payload in m8 (the bottom slider m4 does not rise)
+    ma, ms, m8 = n["arm_mass"], n["slider_mass"], n["platform_mass"] + n["payload_mass"]
+    return bl.G * (4 * ma + 2 * ms + 2 * m8) / n["length"]
+
+
+def _board_crank_by_hand(n):
+    # Singh eqs 18-20: the crank (d = 0.22326 m) carries W1 = 6.88 N at d/2 and (W4 + W5)/2 = 4.78 N at C;
+    # k1 a_x1 b_y1 equals that moment, with b_y1 = a_x1
+    d = 0.22326
+    return (6.88 * d / 2 + 4.78 * d) / n["a_x"] ** 2
+
+
 #: each personal numeric task's right answer from its numbers, by a route independent of its judge
 PERSONAL_RIGHT = {
     "1.1": lambda n: (n["mass"] * n["length"] + n["link_mass"] * n["length"] / 2) / n["counter_mass"],
@@ -637,6 +651,8 @@ PERSONAL_RIGHT = {
     "4.2": _singh_2r_pe,
     "5.1": _lecture_crank_rate,
     "5.2": _singh_fourbar_pe,
+    "6.1": _lift_by_hand,
+    "6.2": _board_crank_by_hand,
     "7.2": lambda n: _lab7_least_stiffness(n),
     # the spring's extra pull e k1 b1 c1 cos(theta_1), with k1 b1 c1 = g (m1 p1 + m2 l1)
     "8.3": lambda n: n["rate_error"] * bl.G * (1.0 * 0.25 + 1.0 * 0.5) * math.cos(n["theta_1"]),

@@ -41,7 +41,7 @@ from .lab2 import LAB2_LEVER, LACOSTE, LAMP_SPRING, lab2_lever
 from .lab3 import LAB3_LEVER, PARTNER_SPRINGS, lab3_torque_error
 from .lab4 import LAB4_PARALLELOGRAM, LAB4_SINGH, lab4_singh_arm
 from .lab5 import LAB5_TECHNIQUE2, lab5_technique2
-from .lab6 import LAB6_BOARD, LAB6_SCISSORS, lab6_scissors
+from .lab6 import LAB6_BOARD, LAB6_LIFT, LAB6_SCISSORS, lab6_scissors
 from .lab7 import LAB7_LAMP, lamp_with_springs
 from .lab8 import LAB8_ARM, LAB8_QUANTILE_LIMIT, LAB8_TOLERANCES, built_arm, lab8_arm
 from .lab9 import LAB9_LINK, lab9_spring
@@ -52,5 +52,5 @@ __all__ = ["Verdict", "Task", "check", "check_data", "set_student", "task_number
            "quantity", "vector", "point", "numeric", "numeric_vector", "symbolic",
            "as_mapping", "DESIGN_TOLERANCE", "design_balanced",
            "LAMP_ARM", "LAB1_FOURBAR", "LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "LAB3_LEVER", "PARTNER_SPRINGS",
-           "LAB4_PARALLELOGRAM", "LAB4_SINGH", "LAB5_TECHNIQUE2", "LAB6_SCISSORS", "LAB6_BOARD",
+           "LAB4_PARALLELOGRAM", "LAB4_SINGH", "LAB5_TECHNIQUE2", "LAB6_SCISSORS", "LAB6_LIFT", "LAB6_BOARD",
            "LAB7_LAMP", "LAB8_ARM", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB9_LINK"]

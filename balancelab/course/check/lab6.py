@@ -1,16 +1,20 @@
 """Lab 6, scissors and Peaucellier-Lipkin: Singh's projector lift and writing board."""
 from __future__ import annotations
 
+import math
+
 from ...core.design import Design
 from ...core.elements import Spring
 from ...methods.singh import peaucellier_board, scissors_lift
 from .answers import as_mapping, design_balanced, numeric, quantity
 from .core import AnswerError, register_task
 
-__all__ = ["LAB6_SCISSORS", "LAB6_BOARD", "lab6_scissors"]
+__all__ = ["LAB6_SCISSORS", "LAB6_LIFT", "LAB6_BOARD", "lab6_scissors"]
 
 #: Lab 6's projector lift (m, kg) and the limits of its design task (N/m, m).
 LAB6_SCISSORS = dict(length=0.5, payload_mass=8.0, k_max=600.0, l10_max=0.45)
+#: Task 6.1's lift (m, kg): arm length and masses, as :func:`~balancelab.methods.singh.scissors_lift` takes them.
+LAB6_LIFT = dict(length=0.5, arm_mass=1.0, slider_mass=0.2, platform_mass=2.0, payload_mass=8.0)
 #: Task 6.2's Peaucellier-Lipkin board: the crank spring's attachment (m).
 LAB6_BOARD = dict(a_x=0.25)
 
@@ -45,16 +49,41 @@ def lab6_scissors(free_length: float, k1: float | None = None, k2: float | None 
                               Spring(k2, s2.free_length, s2.a, s2.b, name=s2.name)])
 
 
+def _lift_numbers(rng) -> dict:
+    """Task 6.1's lift (m, kg): :data:`LAB6_LIFT`, or a student's (arm length, arm and payload masses)."""
+    if rng is None:
+        return dict(LAB6_LIFT)
+    u = lambda lo, hi, nd: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    return dict(LAB6_LIFT, length=u(0.25, 0.9, 3), arm_mass=u(0.5, 1.8, 2), payload_mass=u(1.0, 20.0, 1))
+
+
+def _lift_rate(lift: dict) -> float:
+    return float(scissors_lift(**lift).parameters["k1"])
+
+
 @register_task("6.1", "spring rate k1 of the projector lift with l10 = a", "k1_lift", "numeric",
-               "a number in N/m; accepted within 0.5 %")
-def _t61(answer):
-    return numeric(answer, lab6_scissors(LAB6_SCISSORS["length"]).parameters["k1"], "stiffness")
+               "a number in N/m for your lift (task_numbers('6.1')); accepted within 0.5 %",
+               numbers=_lift_numbers, distinct=(_lift_rate, 0.015))
+def _t61(answer, lift):
+    return numeric(answer, _lift_rate(lift), "stiffness")
 
 
-@register_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's crank for a_x1 = 0.25 m", "k1_board",
-               "numeric", "a number in N/m; accepted within 0.5 %")
-def _t62(answer):
-    return numeric(answer, peaucellier_board(**LAB6_BOARD).parameters["k1"], "stiffness")
+def _board_numbers(rng) -> dict:
+    """Task 6.2's crank attachment ``a_x`` (m): :data:`LAB6_BOARD`, or a student's (log-uniform, 0.08 to 0.4 m)."""
+    if rng is None:
+        return dict(LAB6_BOARD)
+    return dict(a_x=round(math.exp(float(rng.uniform(math.log(0.08), math.log(0.4)))), 4))
+
+
+def _board_rate(board: dict) -> float:
+    return float(peaucellier_board(**board).parameters["k1"])
+
+
+@register_task("6.2", "spring rate k1 on the Peaucellier-Lipkin board's crank for your a_x1", "k1_board",
+               "numeric", "a number in N/m for your a_x1 (task_numbers('6.2')['a_x']); accepted within 0.5 %",
+               numbers=_board_numbers, distinct=(_board_rate, 0.015))
+def _t62(answer, board):
+    return numeric(answer, _board_rate(board), "stiffness")
 
 
 @register_task("6.3", "a projector lift with a shorter spring 1 (open design)", "lift_design", "design",
