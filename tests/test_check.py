@@ -159,6 +159,13 @@ def _lab9_pulley(min_tension=45.0):
             "cable_length": d.springs[0].cable.cable_length, "turn": d.springs[0].cable.turn}
 
 
+def _lab9_tension_by_hand(m: float, r: float) -> float:
+    from balancelab.methods.practice.springs import ExtensionSpring
+
+    k = ExtensionSpring(3e-3, 24e-3, 60, initial_tension=40.0).k   # the rate is chapter 8's, not the task
+    return math.sqrt(45.0 ** 2 + 2 * k * m * bl.G * r * math.sqrt(3))
+
+
 def _lab9_largest_tension():
     # T_max^2 = T_min^2 + 2 k (V(60°) - V(-60°)), V = m g r sin(theta), by hand
     from balancelab.methods.practice.springs import ExtensionSpring
@@ -656,6 +663,8 @@ PERSONAL_RIGHT = {
     "7.2": lambda n: _lab7_least_stiffness(n),
     # the spring's extra pull e k1 b1 c1 cos(theta_1), with k1 b1 c1 = g (m1 p1 + m2 l1)
     "8.3": lambda n: n["rate_error"] * bl.G * (1.0 * 0.25 + 1.0 * 0.5) * math.cos(n["theta_1"]),
+    # T_max^2 = T_min^2 + 2 k (V(60°) - V(-60°)) with V = m g r sin(theta) on the student's link, by hand
+    "9.2": lambda n: _lab9_tension_by_hand(n["mass"], n["length"]),
 }
 
 

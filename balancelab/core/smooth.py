@@ -9,6 +9,8 @@ variation (smooth) from noise that the round-off allowance covers. Layer: core.
 """
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 __all__ = ["smooth_split"]
@@ -34,7 +36,7 @@ def _features(poses: np.ndarray, q: np.ndarray, units) -> np.ndarray:
     return np.stack([np.ones(len(th)) / np.sqrt(len(th))] + [f / np.linalg.norm(f) for f in keep], -1)
 
 
-def smooth_split(poses: np.ndarray, q: np.ndarray, units, energy: np.ndarray) -> tuple[float, float]:
+def smooth_split(poses: np.ndarray, q: np.ndarray, units: Sequence[str], energy: np.ndarray) -> tuple[float, float]:
     """``(spread of the smooth part, spread of the rest)`` (J) of ``energy`` sampled at ``q``.
 
     Parameters

@@ -19,6 +19,8 @@ The verdict is stored on the exception (``err.verdict``). Layer: methods.
 """
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ...core.errors import InfeasibleDesign
@@ -101,10 +103,11 @@ def smooth_within(p: Problem, residual: np.ndarray, tol: float) -> bool:
     --------
     Used by :func:`~balancelab.methods.general.solver.solve` and :func:`infeasible`.
     """
-    if p.design is None or not len(residual):
+    design: Any = p.design
+    if design is None or not len(residual):
         return False
-    smooth, rest = smooth_split(p.poses, p.q, q_units(p.design), residual)
-    slack = allowance(p.design, p.q)  # the report's own allowance and tolerance for the noise: the report settles it
+    smooth, rest = smooth_split(p.poses, p.q, q_units(design), residual)
+    slack = allowance(design, p.q)  # the report's own allowance and tolerance for the noise: the report settles it
     return smooth <= tol + slack and rest <= BALANCE_TOLERANCE * p.load_spread + slack
 
 

@@ -20,6 +20,7 @@ from __future__ import annotations
 import math  # noqa: F401 (the doctests use it)
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from ...core.design import Design
 from ...core.frames import rotate
@@ -68,7 +69,7 @@ def polyline_path(points, theta, anchor, clamp, turn: int) -> np.ndarray:
     return straight + wrapped
 
 
-def polyline_wrap(points, theta, anchor, clamp, turn: int) -> tuple[np.ndarray, np.ndarray]:
+def polyline_wrap(points: ArrayLike, theta: ArrayLike, anchor: ArrayLike, clamp: ArrayLike, turn: int) -> tuple[np.ndarray, np.ndarray]:
     """The cable's straight run from the eyelet and its length wrapped on the polyline (m), at link angles ``theta``.
 
     The tangent vertex is the vertex where the line from the eyelet touches the polyline with
