@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Callable
 
 import balancelab as bl
-from balancelab.course.check.core import student_rng
+from balancelab.course.check.core import student_key, student_rng
 from balancelab.methods.lecture import single_link_counterweight, single_link_spring
 from balancelab.methods.realize import negative_free_length_partner
 from balancelab.methods.singh import serial_2r_min_preload
@@ -100,10 +100,11 @@ PROBLEMS = (
 
 
 def variant(student: str) -> list[tuple[Problem, dict]]:
-    """The problems with ``student``'s numbers (the same on every call and machine)."""
+    """The problems with ``student``'s numbers (the same on every call and machine; ids are
+    case-insensitive, as in the labs: ``Alice`` and ``alice`` get the same numbers)."""
     if not isinstance(student, str) or not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9.-]*", student.strip()):
         raise ValueError(f"student must be an id of letters, digits, '.' and '-' (as on the roster), got {student!r}")
-    return [(p, p.numbers(student_rng(f"exam-{p.name}", student.strip()))) for p in PROBLEMS]
+    return [(p, p.numbers(student_rng(f"exam-{p.name}", student_key(student)))) for p in PROBLEMS]
 
 
 def sheet(student: str, key: bool = False) -> str:

@@ -126,7 +126,10 @@ def main(argv: list[str] | None = None) -> int:
     if args.variants:
         from exam_variants import write_variants
 
-        ids = [ln.strip() for ln in Path(args.variants).read_text().splitlines() if ln.strip()]
+        from balancelab.course.check.core import student_key
+
+        # one variant per student: ids are case-insensitive, as in the labs (Alice and alice are one)
+        ids = list(dict.fromkeys(student_key(ln) for ln in Path(args.variants).read_text().splitlines() if ln.strip()))
         handout, key = write_variants(ids, Path(args.out))
         print(f"wrote {len(ids)} variants: {handout} (for students), {key} (for you: worked solutions)")
         return 0

@@ -77,3 +77,11 @@ def test_command_writes_handouts_without_solutions_and_a_key(tmp_path):
         assert (tmp_path / "exam" / "handout" / f"{s}.md").read_text() == ev.sheet(s)
         assert (tmp_path / "exam" / "key" / f"{s}.md").read_text() == ev.sheet(s, key=True)
     assert not any("Solution" in p.read_text() for p in (tmp_path / "exam" / "handout").iterdir())
+
+
+def test_ids_are_case_insensitive_as_in_the_labs():
+    """Attack A21: ``alice`` and ``Alice`` got different exam numbers (and two files that overwrite
+    each other on a case-insensitive disk), while the labs treat them as one student."""
+    from exam_variants import variant
+
+    assert [n for _, n in variant("Alice")] == [n for _, n in variant("alice")] == [n for _, n in variant(" ALICE ")]
