@@ -320,6 +320,10 @@ SHORTCUT_CELLS = {
             'from balancelab.methods.practice import forces\n'
             'torque_formula = float(forces.generalized_force(lab8.rate_error_arm(0.02), np.array([[0.0, 0.0]]))[1][0, 0])\n'
             'verdict = check("8.4", torque_formula)'],
+    # the library's symbolic energy of the lecture's link, handed in as the arm (attack A21: 9.3 had none)
+    "9.3": ['import balancelab as bl\nfrom balancelab.course.check import check\n'
+            'arm_formula = bl.lecture.single_link_spring(2.0, 0.5, 0.3, 0.2).potential_energy_symbolic()\n'
+            'verdict = check("9.3", arm_formula)'],
 }
 
 

@@ -22,6 +22,7 @@ SHORTCUTS: dict[str, tuple[str, ...]] = {
     "2.2": ("balance_conditions", "generalized_lever", "single_link_spring", "balance", "lacoste_lever"),
     "4.5": ("serial_2r_min_preload", "PE_min", "balance_report", "balance", "singh_fourbar"),
     "8.4": ("rate_error_arm", "generalized_force", "balance_report", "potential_energy", "balance"),
+    "9.3": ("noncircular_pulley", "potential_energy_symbolic", "balance_conditions", "balance"),
 }
 
 
