@@ -437,10 +437,22 @@ def test_docstring_examples_of_the_lab_modules_run():
     import balancelab.course.grading
     import balancelab.course.labtools
 
-    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, lab9, balancelab.course.labtools,
-                balancelab.course.grading):
+    import importlib
+    import pkgutil
+
+    for mod in (ck, core, answers, lab1, lab2, lab3, lab4, lab5, lab6, lab7, lab8, lab9, balancelab.course.grading):
         result = doctest.testmod(mod, optionflags=doctest.ELLIPSIS)
         assert result.attempted > 0 and result.failed == 0, mod.__name__
+    # labtools is a package (split by concept): its modules' examples, together
+    tools = balancelab.course.labtools
+    attempted = 0
+    for info in pkgutil.iter_modules(tools.__path__, tools.__name__ + "."):
+        if info.name.endswith("__main__"):
+            continue
+        result = doctest.testmod(importlib.import_module(info.name), optionflags=doctest.ELLIPSIS)
+        assert result.failed == 0, info.name
+        attempted += result.attempted
+    assert attempted > 0, tools.__name__
 
 
 # ------------------------------------------------- trusted checking, hints, personal numbers
