@@ -203,6 +203,42 @@ def _shrink_image(xobj) -> bool:
     return True
 
 
+_DOUBLED = re.compile(r"^(.*?)\1(.{4,})\2$", re.S)
+
+
+def undouble(title: str) -> str:
+    """A bookmark title Chromium wrote with each run of text twice, written once.
+
+    Chromium's tagged outline sometimes repeats a heading's text runs ("SolutionsSolutions",
+    "3.1. 3.1. Initial tensionInitial tension"); a title that is not so doubled is kept.
+
+    >>> undouble("SolutionsSolutions"), undouble("3.1. 3.1. Initial tensionInitial tension")
+    ('Solutions', '3.1. Initial tension')
+    >>> undouble("3.2. A string over a pulley"), undouble("1.1. Why balance?")
+    ('3.2. A string over a pulley', '1.1. Why balance?')
+    """
+    m = _DOUBLED.match(title)
+    return m.group(1) + m.group(2) if m else title
+
+
+def _undouble_outline(writer) -> None:
+    """Write every bookmark title of ``writer`` once (see :func:`undouble`)."""
+    from pypdf.generic import NameObject, TextStringObject
+
+    outlines = writer._root_object.get("/Outlines")
+    todo = [outlines.get_object().get("/First")] if outlines is not None else []
+    while todo:
+        node = todo.pop()
+        while node is not None:
+            node = node.get_object()
+            title = node.get("/Title")
+            if title is not None and undouble(str(title)) != str(title):
+                node[NameObject("/Title")] = TextStringObject(undouble(str(title)))
+            if node.get("/First") is not None:
+                todo.append(node["/First"])
+            node = node.get("/Next")
+
+
 def shrink_pdf(path: Path) -> tuple[int, int]:
     """Rewrite a PDF printed by Chromium smaller; return its sizes (bytes) before and after.
 
@@ -222,6 +258,7 @@ def shrink_pdf(path: Path) -> tuple[int, int]:
     reader = PdfReader(str(path))
     writer = PdfWriter()
     writer.append(reader)   # the pages and the outline, not the structure tree
+    _undouble_outline(writer)
     if reader.metadata:
         writer.add_metadata(reader.metadata)
     for obj in list(writer._objects):

@@ -248,6 +248,19 @@ def _scripts_module(name: str):
     return module
 
 
+def test_bookmark_titles_chromium_doubles_are_written_once():
+    """The CI build's outline read "SolutionsSolutions" and "3.1. 3.1. Initial tension…Initial
+    tension…" (Chromium's tagged outline repeats a heading's text runs at times)."""
+    sys.path.insert(0, str(ROOT / "scripts"))
+    from build_pdf import undouble
+
+    assert undouble("SolutionsSolutions") == "Solutions"
+    assert undouble("3.1. 3.1. Initial tension: how far it goesInitial tension: how far it goes") == \
+        "3.1. Initial tension: how far it goes"
+    for title in ("3.2. A string over a pulley", "1.1. Why balance?", "Notation and conventions", "2.6.1. eqs 4–8"):
+        assert undouble(title) == title
+
+
 def test_the_printed_course_is_shrunk_without_changing_a_pixel_and_keeps_its_bookmarks(tmp_path):
     """scripts/build_pdf.shrink_pdf: an RGB picture of few colours comes back pixel for pixel
     (indexed), an opaque alpha mask goes, the structure tree goes, the outline stays."""

@@ -91,6 +91,9 @@ def lacoste_energies(weight: float, length: float, a_x: ArrayLike, b_y: ArrayLik
     [6.25, 5.0]
     """
     a_x, b_y = np.broadcast_arrays(real_array("a_x (m)", a_x), real_array("b_y (m)", b_y))
+    if a_x.size == 0:
+        raise ValueError(f"a_x and b_y (m) must hold at least one point each, got shapes "
+                         f"{np.shape(a_x)} and {np.shape(b_y)}")
     out = np.empty(a_x.shape)
     q = np.linspace(-np.pi, np.pi, 4, endpoint=False)[:, None]
     for idx in np.ndindex(a_x.shape):
