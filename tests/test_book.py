@@ -586,12 +586,12 @@ async () => {
     const lost = Math.max(reach.left - r.left, r.right - reach.right);
     if (lost > 1.5) cut.push(`${label(e)}: ${lost.toFixed(0)} px out of reach of ${why}`);
   }
-  // no TeX, $…$, literal \\n or a raw Markdown table row (|---|) in the text a reader sees (code and rendered maths aside)
+  // no TeX, $…$ or literal \\n in the text a reader sees (code and rendered maths aside)
   const raw = [];
   const walker = document.createTreeWalker(main, NodeFilter.SHOW_TEXT, {acceptNode: n =>
     n.parentElement.closest("pre, code, script, style, mjx-container, .math, .highlight, .MathJax_Preview, .cell_input, textarea, mjx-assistive-mml")
       ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT});
-  const tex = /\\\\(?:[a-zA-Z]{2,}|[()\\[\\]])|\\$[^$\\s][^$]*\\$|\\\\n\\b|\\|\\s*:?-{3,}:?\\s*\\|/;
+  const tex = /\\\\(?:[a-zA-Z]{2,}|[()\\[\\]])|\\$[^$\\s][^$]*\\$|\\\\n\\b/;
   for (let n = walker.nextNode(); n; n = walker.nextNode()) {
     const m = n.textContent.match(tex);
     if (m) raw.push(n.textContent.trim().slice(Math.max(0, m.index - 30), m.index + 50));
