@@ -150,11 +150,11 @@ def _clip(point, box):
     return (float(np.clip(point[0], xl, xh)), float(np.clip(point[1], yl, yh)))
 
 
-def search(design, blocks, both, q, objective, default_point, size: float):
-    """The best balanced design over every start ``(p, sol)``; InfeasibleDesign with verdict
-    "impossible" (proved by the lifted relaxation) or "not_found" (the search found none)."""
+def _best_start(design, blocks, both, q, objective, starts):
+    """The alternating rounds from each start ``(fixed end, points)``: the best result
+    ``(value, p, sol, ends)`` (None if none balanced) and the last InfeasibleDesign."""
     best, last = None, None
-    for fixed, pts in start_points(design, blocks, both, q, default_point, size):
+    for fixed, pts in starts:
         for b, pt in zip(both, pts):
             b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
             b.ends[fixed] = (b.ends[fixed][0], pt)
@@ -166,19 +166,17 @@ def search(design, blocks, both, q, objective, default_point, size: float):
             continue
         if best is None or value < best[0] * (1 - 1e-9):
             best = (value, p, sol, [(list(b.ends), b.free) for b in blocks])
+    return best, last
+
+
+def search(design, blocks, both, q, objective, default_point, size: float):
+    """The best balanced design over every start ``(p, sol)``; InfeasibleDesign with verdict
+    "impossible" (proved by the lifted relaxation) or "not_found" (the search found none)."""
+    starts = start_points(design, blocks, both, q, default_point, size)
+    best, last = _best_start(design, blocks, both, q, objective, starts)
     if best is None:  # no alternating start balanced: start again from nonlinear least squares
-        for fixed, pts in nls_starts(design, blocks, both, q):
-            for b, pt in zip(both, pts):
-                b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
-                b.ends[fixed] = (b.ends[fixed][0], pt)
-                b.free = 1 - fixed
-            try:
-                value, p, sol = rounds(design, blocks, both, q, objective)
-            except InfeasibleDesign as err:
-                last = err
-                continue
-            if best is None or value < best[0] * (1 - 1e-9):
-                best = (value, p, sol, [(list(b.ends), b.free) for b in blocks])
+        best, last_nls = _best_start(design, blocks, both, q, objective, nls_starts(design, blocks, both, q))
+        last = last_nls or last
     if best is not None:
         _restore(blocks, best[3])
         return best[1], best[2]
@@ -192,7 +190,7 @@ def search(design, blocks, both, q, objective, default_point, size: float):
         raise last
     out = InfeasibleDesign(
         f"no balanced design found from these candidates (objective {objective!r}): the search over "
-        f"{len(start_points(design, blocks, both, q, default_point, size))} starts (and {NLS_STARTS} nonlinear "
+        f"{len(starts)} starts (and {NLS_STARTS} nonlinear "
         "least-squares fits) for the springs with both ends free found none, but this is NOT proved impossible: the linear relaxation (the moments k p_a, k p_b, "
         f"k p_a p_b^T as unknowns) has a solution ({relaxed.verdict!r}: {relaxed}); try fixing one end of a spring at a "
         "point you choose, or a wider box")
