@@ -999,8 +999,10 @@ def test_duplicate_ids_across_shards_are_flagged_at_merge(tmp_path):
 def test_a_renamed_file_gets_no_published_answers_and_no_control_characters_reach_the_csv(tmp_path):
     """Outside-view attack A18: ``mallory_lab1 (1).ipynb`` (a browser's re-download) and
     ``Mallory_Lab1.ipynb`` holding the published answers scored 5/5 with a note; file names with an
-    escape sequence or a line break reached the CSV raw. Now: status ``unidentified``, the personal
-    tasks 0, and the CSV holds printable text only, one record a line."""
+    escape sequence or a line break reached the CSV raw. Now: ids are case-insensitive, so
+    ``Mallory_Lab1`` is mallory's lab 1 and judged with mallory's numbers (the published answers
+    score 0 on the personal tasks); the others are ``unidentified`` with the personal tasks 0; and the
+    CSV holds printable text only, one record a line."""
     if not sandbox_available():
         pytest.skip("bubblewrap is not available here")
     sub, out = tmp_path / "sub", tmp_path / "grades.csv"
@@ -1018,8 +1020,10 @@ def test_a_renamed_file_gets_no_published_answers_and_no_control_characters_reac
     assert len(rows) == len(names) + 1                      # one record per submission, none forged
     by_name = {r["student"]: r for r in rows}
     assert by_name["carol_lab1"]["1.1"] == "1" and by_name["carol_lab1"]["status"] == "graded"
+    mallory = by_name["Mallory_Lab1"]
+    assert mallory["status"] == "graded" and mallory["1.1"] == "0" and "NO STUDENT ID" not in mallory["notes"]
     for r in rows:
-        if r["student"] != "carol_lab1":
+        if r["student"] not in ("carol_lab1", "Mallory_Lab1"):
             assert r["status"] == "unidentified" and r["1.1"] == "0", r
             assert "NO STUDENT ID" in r["notes"]
 

@@ -478,8 +478,11 @@ def install(shell=None) -> bool:
 
     Examples
     --------
-    >>> install()   # a plain Python session has no IPython shell
-    False
+    It reports whether there was a shell to set up (a plain Python session has none):
+
+    >>> from IPython import get_ipython
+    >>> install() == (get_ipython() is not None)
+    True
     """
     if shell is None:
         try:
