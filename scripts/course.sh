@@ -50,7 +50,8 @@ case "$cmd" in
         log "running the test suite on ${BALANCELAB_TEST_WORKERS:-2} workers"
         # One worker builds the site and runs the browser tests (the "site" group, see tests/conftest.py),
         # the other takes the library, labs and grading tests. BALANCELAB_TEST_WORKERS=0 runs in one process.
-        "$PY" -m pytest -n "${BALANCELAB_TEST_WORKERS:-2}" --dist loadgroup "$@"
+        # --durations: the slowest tests are printed, so that a CI log shows where its time goes.
+        "$PY" -m pytest -n "${BALANCELAB_TEST_WORKERS:-2}" --dist loadgroup --durations=30 "$@"
         ;;
     bench)
         setup
