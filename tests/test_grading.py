@@ -116,9 +116,9 @@ def test_csv_and_summary_from_rows(tmp_path):
             GradeRow("y", "", "malformed", notes="not a valid notebook")]
     p = write_csv(rows, tmp_path / "g.csv")
     text = p.read_text()
-    assert text.splitlines()[0] == ("student,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message,"
+    assert text.splitlines()[0] == ("student,student_id,lab,status,total,max,2.1,2.2,notes,mismatch,2.1 message,2.2 message,"
                                     "seconds,peak_mb,reported_attempts")
-    assert "x,lab2,graded,1,2,1,0," in text
+    assert "x,,lab2,graded,1,2,1,0," in text
     s = summary(rows)
     assert "1/2" in s and "y: malformed" in s
 

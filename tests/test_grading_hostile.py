@@ -1112,3 +1112,81 @@ def test_ids_lab_tags_and_transformer_hooks(tmp_path):
     # the host: no scratch folder, no process of a submission left
     assert list(scratch.iterdir()) == []
     assert _marked_processes() == []
+
+
+#: Issue 18, brief g18 item 2: a cell that raises an exception whose text reads like the grader's cap
+#: notes, after hooking what IPython runs and shows (``transform_cell``, ``sys.displayhook``,
+#: ``events``): the row's notes about caps come only from the runner's measurements, and the kernel's
+#: own words (the exception) are quoted and marked as the submission's.
+KERNEL_WORDS = """import sys
+ip = get_ipython()
+_transform = ip.transform_cell
+ip.transform_cell = lambda src: _transform(src) + "\\nprint('the memory cap was reached')\\n"
+sys.displayhook = lambda value: print("; the process cap (64 at once) was reached")
+ip.events.register("post_run_cell", lambda result=None: print("output cap: 9 MB were dropped"))
+class CapReached(Exception):
+    pass
+raise CapReached("; the memory cap of the notebook's processes (1000 MB) was reached; "
+                 "the in-memory folder /tmp reached its cap (256 MB)")"""
+_GRADER_CAP_NOTES = ("the memory cap", "the in-memory folder", "the process cap", "output cap")
+
+
+def test_student_id_column_roster_warnings_and_the_kernels_words_in_notes(tmp_path):
+    """Brief g18, items 1-2, end to end with a roster.
+
+    * the table's ``student_id`` column (after ``student``) is the id each row was judged with,
+      from the roster, and survives ``read_csv`` and ``merge_csv``;
+    * roster rows that match no file, match several files, or give one id to two files of a lab
+      are warned about on stderr and in the printed summary;
+    * a notebook that hooks ``transform_cell``, ``sys.displayhook`` and ``events`` and raises an
+      exception worded like cap notes gets no cap note: its words are quoted as its own.
+    """
+    if not sandbox_available():
+        pytest.skip("bubblewrap is not available here")
+    from balancelab.course.gradetable import merge_csv, read_csv
+
+    sub, scratch = tmp_path / "sub", tmp_path / "scratch"
+    for d in (sub, sub / "x", sub / "y", scratch):
+        d.mkdir()
+    notebooks = {"alice_lab1": personal_r_c("S-Alice"), "twin_lab1": personal_r_c("s-alice"),
+                 "x/dup_lab1": personal_r_c("s3"), "y/dup_lab1": personal_r_c("s3"),
+                 "stray_lab1": personal_r_c("stray"), "hook_lab1": personal_r_c("h1")}
+    for name, code in notebooks.items():
+        cells = (code, KERNEL_WORDS) if name == "hook_lab1" else (code,)
+        nbformat.write(submission_notebook("lab1", *cells), sub / f"{name}.ipynb")
+    roster = tmp_path / "roster.csv"
+    roster.write_text("file,student_id\nalice_lab1.ipynb,S-Alice\ntwin_lab1.ipynb,s-alice\ndup_lab1.ipynb,s3\n"
+                      "gone_lab1.ipynb,s2\nhook_lab1.ipynb,h1\n", encoding="utf-8")
+    out = tmp_path / "grades.csv"
+    proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
+                           "--roster", str(roster), "--jobs", "2", "--cell-timeout", "30"], capture_output=True,
+                          text=True, timeout=900, cwd=ROOT, env={**os.environ, "BALANCELAB_SCRATCH": str(scratch)})
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    header = out.read_text(encoding="utf-8").splitlines()[0].split(",")
+    assert header[:3] == ["student", "student_id", "lab"]
+    rows = {r["student"]: r for r in csv.DictReader(out.open(encoding="utf-8"))}
+    assert set(rows) == set(notebooks)
+    ids = {name: r["student_id"] for name, r in rows.items()}
+    assert ids == {"alice_lab1": "s-alice", "twin_lab1": "s-alice", "x/dup_lab1": "s3", "y/dup_lab1": "s3",
+                   "stray_lab1": "", "hook_lab1": "h1"}
+    for name in ("alice_lab1", "twin_lab1", "x/dup_lab1", "y/dup_lab1", "hook_lab1"):
+        assert rows[name]["1.1"] == "1", (name, rows[name]["notes"])
+    assert rows["stray_lab1"]["status"] == "unidentified" and rows["stray_lab1"]["1.1"] == "0"
+    # the roster's problems, on stderr and in the summary
+    for said in ("roster: 'gone_lab1.ipynb' matches no submitted file",
+                 "roster: 'dup_lab1.ipynb' matches 2 submitted files (x/dup_lab1.ipynb, y/dup_lab1.ipynb)",
+                 "roster: the id 's-alice' is given to 2 files of lab1 (alice_lab1.ipynb, twin_lab1.ipynb)"):
+        assert said in proc.stderr and f"WARNING: {said}" in proc.stdout, (said, proc.stderr[-1500:])
+    assert "hook_lab1.ipynb" not in proc.stderr
+    # the kernel's words are quoted and marked; no note about a cap it did not hit
+    hook = rows["hook_lab1"]
+    assert hook["status"] == "graded", hook["notes"]
+    parts = hook["notes"].split("; ")
+    assert not [p for p in parts if p.startswith(_GRADER_CAP_NOTES)], hook["notes"]
+    assert 'cell 2 raised an error (reported by the submission: "CapReached: , the memory cap' in hook["notes"]
+    assert all(p.count('"') % 2 == 0 for p in parts), parts  # every quote closes inside its own note
+    # the column round-trips through read_csv and merge_csv
+    assert {r.student: r.student_id for r in read_csv(out)} == ids
+    merged = merge_csv([out], tmp_path / "merged.csv")
+    assert {r.student: r.student_id for r in read_csv(merged)} == ids
+    assert list(scratch.iterdir()) == []

@@ -82,6 +82,10 @@ class GradeRow:
     attempts : dict
         Task id -> number of ``check(...)`` calls the notebook made, as its kernel reported them
         (column ``reported_attempts``: the notebook's word, sanitized, never a measurement).
+    student_id : str
+        The id the grade was judged with (its personal numbers), from the roster or the file
+        name, never from the notebook; ``""`` when none could be established. Written as the
+        column after ``student``.
 
     Examples
     --------
@@ -101,6 +105,7 @@ class GradeRow:
     seconds: float | None = None
     peak_mb: float | None = None
     attempts: dict = field(default_factory=dict)
+    student_id: str = ""
 
     @property
     def total(self) -> float:
@@ -125,7 +130,7 @@ _EXTRA = ["seconds", "peak_mb", ATTEMPTS_COLUMN]
 
 
 def _header(cols: list[str]) -> list[str]:
-    return (["student", "lab", "status", "total", "max"] + cols + ["notes", "mismatch"]
+    return (["student", "student_id", "lab", "status", "total", "max"] + cols + ["notes", "mismatch"]
             + [f"{c} message" for c in cols] + _EXTRA)
 
 
@@ -145,7 +150,7 @@ def _attempts(counts: dict) -> dict:
 def _record(r: GradeRow, cols: list[str]) -> list[str]:
     num = lambda x: "" if x is None else f"{x:g}"  # noqa: E731
     attempts = " ".join(f"{k}:{v}" for k, v in sorted(_attempts(r.attempts).items()))
-    return [cell(x) for x in [r.student, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
+    return [cell(x) for x in [r.student, r.student_id, r.lab, r.status, f"{r.total:g}", f"{r.max_total:g}"]
             + [f"{r.scores[c]:g}" if c in r.scores else "" for c in cols] + [r.notes, r.mismatch]
             + [r.messages.get(c, "") for c in cols] + [num(r.seconds), num(r.peak_mb), attempts]]
 
@@ -170,7 +175,13 @@ def write_csv(rows: list[GradeRow], path: str | Path) -> Path:
     >>> rows = [GradeRow("alice", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}, messages={"2.1": "✔ ok"})]
     >>> path = write_csv(rows, pathlib.Path(tempfile.mkdtemp()) / "grades.csv")
     >>> path.read_text(encoding="utf-8").splitlines()[1]
-    'alice,lab2,graded,1,1,1,,,✔ ok,,,'
+    'alice,,lab2,graded,1,1,1,,,✔ ok,,,'
+
+    The id the row was judged with is the second column:
+
+    >>> row = GradeRow("x/Alice_lab2", "lab2", "graded", {"2.1": 1.0}, {"2.1": 1.0}, student_id="alice")
+    >>> write_csv([row], path).read_text(encoding="utf-8").splitlines()[1][:26]
+    'x/Alice_lab2,alice,lab2,gr'
     """
     path = Path(path)
     cols = _task_columns(rows)
@@ -202,7 +213,7 @@ class RowWriter:
     '=cmd'
     >>> w.close()
     >>> p.read_text(encoding="utf-8").splitlines()[0]
-    'student,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,reported_attempts'
+    'student,student_id,lab,status,total,max,2.1,notes,mismatch,2.1 message,seconds,peak_mb,reported_attempts'
     """
 
     def __init__(self, path: str | Path) -> None:
@@ -245,6 +256,12 @@ def read_csv(path: str | Path) -> list[GradeRow]:
     ...               pathlib.Path(tempfile.mkdtemp()) / "g.csv")
     >>> read_csv(p)[0].scores
     {'2.1': 1.0}
+
+    The ``student_id`` column is read back (a table of an older grader has none: ``""``):
+
+    >>> p = write_csv([GradeRow("=a_lab2", "lab2", "graded", student_id="=a")], p)
+    >>> read_csv(p)[0].student_id
+    '=a'
     """
     rows = []
     # a table written by an older grader may hold a huge cell (a student's text): read it, then cut it short
@@ -263,7 +280,7 @@ def read_csv(path: str | Path) -> list[GradeRow]:
             rows.append(GradeRow(rec["student"], lab, rec["status"], scores, {k: points.get(k, 0.0) for k in tids},
                                  rec.get("notes", ""), {k: rec.get(f"{k} message", "") for k in tids},
                                  rec.get("mismatch", ""), num(rec.get("seconds")), num(rec.get("peak_mb")),
-                                 attempts))
+                                 attempts, rec.get("student_id", "")))
     return rows
 
 
@@ -280,8 +297,9 @@ def merge_csv(paths: list[str | Path], out: str | Path, roster: dict[str, str] |
     out : str or Path
         The merged table.
     roster : dict, optional
-        The roster the shards were graded with (:func:`~balancelab.course.intake.read_roster`);
-        without one, ids come from the file names (:func:`~balancelab.course.intake.identity`).
+        The roster the shards were graded with (:func:`~balancelab.course.intake.read_roster`),
+        for rows without a ``student_id`` (tables of an older grader); without one, their ids
+        come from the file names (:func:`~balancelab.course.intake.identity`).
 
     Returns
     -------
@@ -325,7 +343,7 @@ def _duplicates_across(rows: list[GradeRow], table: dict[str, int], roster: dict
 
     groups: dict[tuple[str, str], list[GradeRow]] = {}
     for r in rows:
-        sid = identity(r.student + ".ipynb", roster)[0]
+        sid = r.student_id or identity(r.student + ".ipynb", roster)[0]
         if sid and r.lab:
             groups.setdefault((sid, r.lab), []).append(r)
     notes = {}
@@ -338,12 +356,15 @@ def _duplicates_across(rows: list[GradeRow], table: dict[str, int], roster: dict
             for r in rows]
 
 
-def summary(rows: list[GradeRow]) -> str:
-    """A plain-text table of the grades (what the command prints).
+def summary(rows: list[GradeRow], warnings: list[str] | tuple[str, ...] = ()) -> str:
+    """A plain-text table of the grades (what the command prints), then the batch's warnings.
 
     Parameters
     ----------
     rows : list of GradeRow
+    warnings : list of str
+        Problems of the batch as a whole (e.g. the roster's, see
+        :func:`~balancelab.course.intake.roster_problems`), one line each after the table.
 
     Returns
     -------
@@ -361,6 +382,8 @@ def summary(rows: list[GradeRow]) -> str:
 
     >>> "\\x1b" in summary([GradeRow("\\x1b]0;pwned\\x07\\x1b[2Jeve", "", "malformed", notes="x\\nFAKE")])
     False
+    >>> summary([], ["roster: 'gone_lab1.ipynb' matches no submitted file"]).splitlines()[-1]
+    "WARNING: roster: 'gone_lab1.ipynb' matches no submitted file"
     """
     cols = _task_columns(rows)
     head = ["student", "lab", "status", "score"] + cols
@@ -376,4 +399,5 @@ def summary(rows: list[GradeRow]) -> str:
             lines.append(f"  {excerpt(r.student, 60)}: {excerpt(r.status, 20)}: {excerpt(r.notes, 400)}")
         elif r.mismatch:
             lines.append(f"  {excerpt(r.student, 60)}: lab mismatch: {excerpt(r.mismatch, 200)}")
+    lines += [f"WARNING: {excerpt(w, 300)}" for w in warnings]
     return "\n".join(lines)

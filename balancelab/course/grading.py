@@ -28,9 +28,11 @@ never modified; a link or a non-regular file is refused, not read.
 
 Whose a submission is comes from ``--roster roster.csv`` (columns ``file``, ``student_id``) or
 from its file name (``ID_labN.ipynb`` or ``ID/labN.ipynb``), never from the notebook; personal
-numbers are that student's.
+numbers are that student's. Roster rows that match no file or several files, and ids given to
+several files of one lab, are warned about (stderr and the printed summary).
 
-The result is one row per notebook (written as each notebook finishes): lab, status, total,
+The result is one row per notebook (written as each notebook finishes): the student id it was
+judged with (``student_id``: roster or file name), lab, status, total,
 max, the score of each task, notes, the lab mismatch flag, each task's verdict message, the
 wall time, the peak memory and the check attempts per task. A notebook that is not valid JSON,
 crashes its kernel, loops, hits a cap or belongs to no known lab gets a row with a clear status
@@ -57,7 +59,7 @@ from .gradetable import GradeRow, RowWriter, merge_csv, read_csv, summary, write
 from .sanitize import excerpt
 from .check.core import student_key
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, lab_sources, read_regular, read_roster,
-                     resolve_lab)
+                     resolve_lab, roster_problems)
 from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, precompile_package, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
@@ -224,8 +226,8 @@ def _lab_mismatch_note(nb, path: Path, lab: str | None, graded_as: str, mismatch
     return f"lab mismatch ({excerpt(mismatch, 120)}): graded as {graded_as} ({decided} decides)"
 
 
-def _refused(student: str, why: str) -> GradeRow:
-    return GradeRow(student, "", "refused", notes=f"not graded: {why}")
+def _refused(student: str, why: str, sid: str) -> GradeRow:
+    return GradeRow(student, "", "refused", notes=f"not graded: {why}", student_id=sid)
 
 
 def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
@@ -274,20 +276,23 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     start = time.monotonic()
     path = Path(path)
     student = student or path.stem
+    sid, how = (student_key(student_id), id_source) if student_id is not None else identity(path.name, None)
     try:
         data = read_regular(path, MAX_NOTEBOOK)
     except OSError as e:
-        return _refused(student, str(e) if isinstance(e, PermissionError) else f"cannot be read ({type(e).__name__})")
+        return _refused(student, str(e) if isinstance(e, PermissionError) else f"cannot be read ({type(e).__name__})",
+                        sid)
     nb, problem = _parse_notebook(data)
     lb, mismatch = resolve_lab(nb or {}, path, lab)
     known = {t.lab for t in _check.tasks()}
     points = {t.id: float(t.points) for t in _check.tasks(lb)} if lb in known else {}
     zero = {t: 0.0 for t in points}
     if nb is None:
-        return GradeRow(student, lb if lb in known else "", "malformed", zero, points, problem, mismatch=mismatch)
+        return GradeRow(student, lb if lb in known else "", "malformed", zero, points, problem, mismatch=mismatch,
+                        student_id=sid)
     if lb not in known:
-        return GradeRow(student, "", "unknown lab", notes=_unknown_lab_note(nb, path, lab), mismatch=mismatch)
-    sid, how = (student_key(student_id), id_source) if student_id is not None else identity(path.name, None)
+        return GradeRow(student, "", "unknown lab", notes=_unknown_lab_note(nb, path, lab), mismatch=mismatch,
+                        student_id=sid)
     use = sandbox_available() if sandbox is None else sandbox
     precompile_package()  # once per grader: else every kernel compiles balancelab again
     status, results, run_notes, extra = _run(data, lb, sid, cell_timeout, notebook_timeout, use, caps or Caps())
@@ -320,7 +325,7 @@ def grade_notebook(path: str | Path, *, lab: str | None = None, cell_timeout: in
     peak = extra.get("peak")
     return GradeRow(student, lb, status, scores, points, "; ".join(notes), messages, mismatch,
                     round(time.monotonic() - start, 2), round(peak / 2 ** 20, 1) if peak else None,
-                    extra.get("attempts", {}))
+                    extra.get("attempts", {}), sid)
 
 
 def shard(files: list, spec: str | None) -> list:
@@ -398,20 +403,21 @@ def derive_refusals(nb: dict, lab: str) -> dict[str, list[str]]:
     return out
 
 
-def _failed_row(name: str, path: Path, lab: str | None, error: Exception) -> GradeRow:
+def _failed_row(name: str, path: Path, lab: str | None, error: Exception, sid: str = "") -> GradeRow:
     """The row of a notebook the grader failed on: its lab (from ``--lab`` or the file name) and that
     lab's points, all 0, so that a table's percentages stay defined."""
     forced, from_name = lab_sources({}, path, lab)[2], lab_sources({}, path, lab)[0]
     lb = forced or from_name or ""
     points = {t.id: float(t.points) for t in _check.tasks(lb)} if lb in {t.lab for t in _check.tasks()} else {}
     return GradeRow(name, lb, "error", {t: 0.0 for t in points}, points,
-                    notes=f"the grader failed on this notebook ({type(error).__name__}); scores 0")
+                    notes=f"the grader failed on this notebook ({type(error).__name__}); scores 0", student_id=sid)
 
 
 def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: int = 60,
                  notebook_timeout: int = 600, progress: bool = False, jobs: int = 1,
                  shard_spec: str | None = None, sandbox: bool | None = None, roster: dict | None = None,
-                 out: str | Path | None = None, caps: Caps | None = None) -> list[GradeRow]:
+                 out: str | Path | None = None, caps: Caps | None = None,
+                 warnings: list[str] | None = None) -> list[GradeRow]:
     """Grade every ``*.ipynb`` under ``folder`` (checkpoints skipped, links refused), one row each.
 
     Parameters
@@ -431,6 +437,10 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         it the id is read from the file name (:func:`~balancelab.course.intake.identity`).
     out : str or Path, optional
         CSV written row by row as notebooks finish (then rewritten compactly at the end).
+    warnings : list, optional
+        Extended with the batch's problems (a roster row that matches no file or several, an id
+        given to several files of one lab: :func:`~balancelab.course.intake.roster_problems`),
+        which are also printed on stderr.
 
     Returns
     -------
@@ -454,7 +464,13 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
         raise FileNotFoundError(f"no such folder: {folder}")
     if not isinstance(jobs, int) or jobs < 1:
         raise ValueError(f"jobs must be an integer >= 1, got {jobs!r}")
-    files = shard(find_submissions(folder), shard_spec)
+    every = find_submissions(folder)
+    files = shard(every, shard_spec)
+    problems = roster_problems([str(p.relative_to(folder)) for p in every], roster) if roster is not None else []
+    for w in problems:
+        print(f"WARNING: {excerpt(w, 300)}", file=sys.stderr, flush=True)
+    if warnings is not None:
+        warnings += problems
     if sandbox is None and not sandbox_available():
         print(f"WARNING: {NO_SANDBOX_WARNING}", file=sys.stderr, flush=True)
     clean_stale()
@@ -469,7 +485,7 @@ def grade_folder(folder: str | Path, *, lab: str | None = None, cell_timeout: in
             row = grade_notebook(p, lab=lab, cell_timeout=cell_timeout, notebook_timeout=notebook_timeout,
                                  student=name, student_id=sid, sandbox=sandbox, caps=caps, id_source=how)
         except Exception as e:  # never stop the batch
-            row = _failed_row(name, p, lab, e)
+            row = _failed_row(name, p, lab, e, sid)
         if progress:
             print(f"graded {excerpt(name, 80)}: {row.status}, {row.total:g}/{row.max_total:g}", flush=True)
         return row
@@ -573,14 +589,15 @@ def main(argv: list[str] | None = None) -> int:
         if threading.current_thread() is threading.main_thread():
             for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
                 signal.signal(sig, stop_on_signal)
+        warnings: list[str] = []
         rows = grade_folder(args.folder[0], lab=args.lab, cell_timeout=args.cell_timeout,
                             notebook_timeout=args.notebook_timeout, progress=True, jobs=args.jobs,
                             shard_spec=args.shard, sandbox=False if args.no_sandbox else None, roster=roster,
-                            out=args.out, caps=caps)
+                            out=args.out, caps=caps, warnings=warnings)
     except (FileNotFoundError, ValueError, OSError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
-    print(summary(rows))
+    print(summary(rows, warnings))
     print(f"wrote {args.out}")
     return 0
 

@@ -20,8 +20,8 @@ from pathlib import Path
 from .check.core import student_key
 from .sanitize import excerpt
 
-__all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "read_roster", "identity",
-           "resolve_lab", "lab_sources", "cheat_notes"]
+__all__ = ["MAX_NOTEBOOK", "ID_PATTERN", "find_submissions", "read_regular", "read_roster", "roster_problems",
+           "identity", "resolve_lab", "lab_sources", "cheat_notes"]
 
 #: Largest notebook file read (bytes).
 MAX_NOTEBOOK = 20 * 2 ** 20
@@ -158,6 +158,55 @@ def read_roster(path: str | Path) -> dict[str, str]:
             if name in out:
                 raise ValueError(f"roster {path} lists {name!r} twice")
             out[name] = sid
+    return out
+
+
+def roster_problems(rels: list[str], roster: dict[str, str]) -> list[str]:
+    """What is wrong with a roster for the submitted files: rows that match no file, rows that
+    match several files, ids given to several files of one lab.
+
+    A row matches a file by its path in the graded folder, or by its bare name when no row names
+    that path (as :func:`identity` looks rows up).
+
+    Parameters
+    ----------
+    rels : list of str
+        Every submission's path in the graded folder (all of them, not one shard's).
+    roster : dict
+        :func:`read_roster`'s result.
+
+    Returns
+    -------
+    list of str
+        One sentence per problem (empty when the roster fits the folder).
+
+    Examples
+    --------
+    >>> roster = {"alice_lab1.ipynb": "s1", "gone_lab1.ipynb": "s2", "a/bob_lab1.ipynb": "s3",
+    ...           "b/bob_lab1.ipynb": "s3", "carol_lab1.ipynb": "s4"}
+    >>> for p in roster_problems(["x/alice_lab1.ipynb", "y/alice_lab1.ipynb", "a/bob_lab1.ipynb",
+    ...                           "b/bob_lab1.ipynb", "carol_lab1.ipynb"], roster):
+    ...     print(p)
+    roster: 'alice_lab1.ipynb' matches 2 submitted files (x/alice_lab1.ipynb, y/alice_lab1.ipynb): give their paths
+    roster: 'gone_lab1.ipynb' matches no submitted file
+    roster: the id 's3' is given to 2 files of lab1 (a/bob_lab1.ipynb, b/bob_lab1.ipynb)
+    """
+    rels = [r.replace(os.sep, "/") for r in rels]
+    out = []
+    for name in roster:
+        found = [r for r in rels if r == name or (r.rsplit("/", 1)[-1] == name and r not in roster)]
+        if not found:
+            out.append(f"roster: {excerpt(name, 80)!r} matches no submitted file")
+        elif len(found) > 1:
+            out.append(f"roster: {excerpt(name, 80)!r} matches {len(found)} submitted files "
+                       f"({excerpt(', '.join(found), 200)}): give their paths")
+    groups: dict[tuple[str, str], list[str]] = {}
+    for name, sid in roster.items():
+        groups.setdefault((student_key(sid), lab_sources({}, Path(name))[0] or "no lab"), []).append(name)
+    for (sid, lab), names in groups.items():
+        if len(names) > 1:
+            out.append(f"roster: the id {excerpt(sid, 40)!r} is given to {len(names)} files of {lab} "
+                       f"({excerpt(', '.join(names), 200)})")
     return out
 
 

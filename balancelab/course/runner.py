@@ -127,6 +127,11 @@ def _kernel_manager_class():
             env = {"MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1", "PYTHONNOUSERSITE": "1",
                    "IPYTHONDIR": f"{WORK}/.ipython", "MPLCONFIGDIR": f"{WORK}/.mpl",
                    "JUPYTER_RUNTIME_DIR": f"{WORK}/.runtime", "PYDEVD_DISABLE_FILE_VALIDATION": "1"}
+            pkg = Path(__file__).resolve().parents[1]
+            if sandbox and (pkg.parent / "pyproject.toml").is_file():
+                # a checkout (this grader's balancelab, bound alone at its own path): the kernel imports
+                # that one, not the one an editable install's finder may name elsewhere (unbound there)
+                env["PYTHONPATH"] = str(pkg.parent)
             cpu = 24 * 3600
             # with a cgroup the tree's memory is capped there; a process's address space (libraries and
             # thread arenas reserve far more than they use) then only needs a loose limit
@@ -216,6 +221,14 @@ def _exported(cell, nonce: str) -> dict | None:
     return found
 
 
+def _reported_error(i: int, output: dict) -> str:
+    """The note of an error output of cell ``i``: the kernel's own words (any code can raise any
+    exception with any text, or send an error output), quoted and marked as the submission's, with
+    no ``;`` that would read as a note of the grader's."""
+    said = excerpt(output.get("ename"), 40) + (f": {excerpt(output.get('evalue'), 60)}" if output.get("evalue") else "")
+    return f'cell {i} raised an error (reported by the submission: "{said.replace(";", ",").replace(chr(34), chr(39))}")'
+
+
 def _lock(share: Path) -> bool:
     """Make the socket folder read-only for the kernel (its sockets exist by now): no disk there."""
     try:
@@ -253,9 +266,7 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
         try:
             nb.cells[0] = cell
             client.execute_cell(cell, 0)
-            errors += [f"cell {i} raised {excerpt(o.get('ename'), 40)}"
-                       + (f": {excerpt(o.get('evalue'), 60)}" if o.get("evalue") else "")
-                       for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
+            errors += [_reported_error(i, o) for o in cell.get("outputs", []) if o.get("output_type") == "error"][:5]
             cell.outputs = []
             nb.cells[0] = probe
             client.timeout = cell_timeout  # the probe exports what the cell left, even past the budget
