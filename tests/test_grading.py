@@ -208,3 +208,27 @@ def test_the_grader_refuses_a_derive_shortcut_as_the_notebook_does():
         cell = next(c for c in nb.cells if c.cell_type == "code" and f'check("{t.id}"' in c.source)
         cell.source = f"_ = {SHORTCUTS[t.id][0]}\n" + cell.source
         assert derive_refusals(nb, t.lab) == {t.id: [SHORTCUTS[t.id][0]]}
+
+
+@pytest.mark.parametrize("tag, said", [("lab99", "lab99"), ("lab 7", "lab7"), (7, "lab7"), (-1, "unreadable (-1)"),
+                                       (3.0, "unreadable (3.0)"), (True, "unreadable (True)"),
+                                       ([1], "unreadable ([1])"), ({"n": 1}, "unreadable ({'n': 1})"),
+                                       ("lab1; lab2", "unreadable (lab1; lab2)"), (None, None), ("  ", None)])
+def test_a_bad_lab_tag_never_hides_the_file_names_lab(tag, said):
+    """Brief g18 item 3: whatever the notebook's ``balancelab.lab`` tag holds, the file name's lab
+    is graded; a tag that disagrees (a wrong lab, a name of no lab, a value that is no name) is a
+    note that says what it said; no tag, or a blank one, is no note."""
+    from balancelab.course.grading import _lab_mismatch_note, resolve_lab
+
+    nb = {"metadata": {"balancelab": {"lab": tag}}}
+    lab, mismatch = resolve_lab(nb, Path("sub/ann_lab1.ipynb"))
+    assert lab == "lab1"
+    if said is None:
+        assert mismatch == ""
+    else:
+        assert mismatch == f"file name says lab1, metadata says {said}"
+        note = _lab_mismatch_note(nb, Path("sub/ann_lab1.ipynb"), None, lab, mismatch)
+        assert note.startswith(f"lab mismatch: the notebook's metadata says {said} but the file name says lab1: "
+                               "graded as lab1")
+    for meta in ({"balancelab": "lab5"}, {"balancelab": None}, [], "lab5"):  # no table where one is expected
+        assert resolve_lab({"metadata": meta}, Path("ann_lab1.ipynb")) == ("lab1", "")

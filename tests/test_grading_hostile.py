@@ -1132,14 +1132,15 @@ _GRADER_CAP_NOTES = ("the memory cap", "the in-memory folder", "the process cap"
 
 
 def test_student_id_column_roster_warnings_and_the_kernels_words_in_notes(tmp_path):
-    """Brief g18, items 1-2, end to end with a roster.
+    """Brief g18, items 1-3, end to end with a roster.
 
     * the table's ``student_id`` column (after ``student``) is the id each row was judged with,
       from the roster, and survives ``read_csv`` and ``merge_csv``;
     * roster rows that match no file, match several files, or give one id to two files of a lab
       are warned about on stderr and in the printed summary;
     * a notebook that hooks ``transform_cell``, ``sys.displayhook`` and ``events`` and raises an
-      exception worded like cap notes gets no cap note: its words are quoted as its own.
+      exception worded like cap notes gets no cap note: its words are quoted as its own;
+    * a metadata lab tag that is no lab name leaves the file name's lab, with a note.
     """
     if not sandbox_available():
         pytest.skip("bubblewrap is not available here")
@@ -1150,13 +1151,16 @@ def test_student_id_column_roster_warnings_and_the_kernels_words_in_notes(tmp_pa
         d.mkdir()
     notebooks = {"alice_lab1": personal_r_c("S-Alice"), "twin_lab1": personal_r_c("s-alice"),
                  "x/dup_lab1": personal_r_c("s3"), "y/dup_lab1": personal_r_c("s3"),
-                 "stray_lab1": personal_r_c("stray"), "hook_lab1": personal_r_c("h1")}
+                 "stray_lab1": personal_r_c("stray"), "hook_lab1": personal_r_c("h1"), "odd_lab1": personal_r_c("o1")}
     for name, code in notebooks.items():
         cells = (code, KERNEL_WORDS) if name == "hook_lab1" else (code,)
-        nbformat.write(submission_notebook("lab1", *cells), sub / f"{name}.ipynb")
+        nb = submission_notebook("lab1", *cells)
+        if name == "odd_lab1":  # item 3: a tag that is no lab name
+            nb.metadata["balancelab"]["lab"] = [5]
+        nbformat.write(nb, sub / f"{name}.ipynb")
     roster = tmp_path / "roster.csv"
     roster.write_text("file,student_id\nalice_lab1.ipynb,S-Alice\ntwin_lab1.ipynb,s-alice\ndup_lab1.ipynb,s3\n"
-                      "gone_lab1.ipynb,s2\nhook_lab1.ipynb,h1\n", encoding="utf-8")
+                      "gone_lab1.ipynb,s2\nhook_lab1.ipynb,h1\nodd_lab1.ipynb,o1\n", encoding="utf-8")
     out = tmp_path / "grades.csv"
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),
                            "--roster", str(roster), "--jobs", "2", "--cell-timeout", "30"], capture_output=True,
@@ -1168,10 +1172,13 @@ def test_student_id_column_roster_warnings_and_the_kernels_words_in_notes(tmp_pa
     assert set(rows) == set(notebooks)
     ids = {name: r["student_id"] for name, r in rows.items()}
     assert ids == {"alice_lab1": "s-alice", "twin_lab1": "s-alice", "x/dup_lab1": "s3", "y/dup_lab1": "s3",
-                   "stray_lab1": "", "hook_lab1": "h1"}
-    for name in ("alice_lab1", "twin_lab1", "x/dup_lab1", "y/dup_lab1", "hook_lab1"):
+                   "stray_lab1": "", "hook_lab1": "h1", "odd_lab1": "o1"}
+    for name in ("alice_lab1", "twin_lab1", "x/dup_lab1", "y/dup_lab1", "hook_lab1", "odd_lab1"):
         assert rows[name]["1.1"] == "1", (name, rows[name]["notes"])
     assert rows["stray_lab1"]["status"] == "unidentified" and rows["stray_lab1"]["1.1"] == "0"
+    odd = rows["odd_lab1"]
+    assert odd["lab"] == "lab1" and odd["mismatch"] == "file name says lab1, metadata says unreadable ([5])"
+    assert "the notebook's metadata says unreadable ([5]) but the file name says lab1: graded as lab1" in odd["notes"]
     # the roster's problems, on stderr and in the summary
     for said in ("roster: 'gone_lab1.ipynb' matches no submitted file",
                  "roster: 'dup_lab1.ipynb' matches 2 submitted files (x/dup_lab1.ipynb, y/dup_lab1.ipynb)",

@@ -272,8 +272,12 @@ def _identity(rel: str, roster: dict[str, str] | None) -> tuple[str, str]:
 
 
 def _norm_lab(lab) -> str | None:
-    if not isinstance(lab, (str, int)) or str(lab).strip() == "":
+    """``labN``; None for no tag (absent or blank); ``unreadable (...)`` for any other tag (a float, a
+    list, a table, a name of no lab), so that a tag that cannot be read is still reported."""
+    if lab is None or (isinstance(lab, str) and lab.strip() == ""):
         return None
+    if not isinstance(lab, (str, int)) or isinstance(lab, bool):
+        return f"unreadable ({excerpt(lab, 20)})"
     m = re.fullmatch(r"(?:lab)?\s*(\d{1,3})", str(lab).strip(), re.IGNORECASE)
     return f"lab{int(m.group(1))}" if m else f"unreadable ({excerpt(lab, 20)})"
 
@@ -339,8 +343,14 @@ def lab_sources(nb: dict, path: Path, lab: str | None = None) -> tuple[str | Non
     ('lab2', 'lab7', None)
     >>> lab_sources({}, Path("slab3_lab1.ipynb"))[0]
     'lab1'
+
+    A tag that is no lab name is reported as unreadable, never read as no tag:
+
+    >>> lab_sources({"metadata": {"balancelab": {"lab": [5]}}}, Path("ann_lab2.ipynb"))
+    ('lab2', 'unreadable ([5])', None)
     """
-    meta = nb.get("metadata", {}).get("balancelab", {}) if isinstance(nb, dict) else {}
+    meta = nb.get("metadata", {}) if isinstance(nb, dict) else {}
+    meta = meta.get("balancelab", {}) if isinstance(meta, dict) else {}
     from_meta = _norm_lab(meta.get("lab")) if isinstance(meta, dict) else None
     # the ``labN`` of ``ID_labN`` or ``labN...`` first: an id may itself hold "lab3" (``slab3_lab1``)
     m = (re.search(r"(?:^|_)lab[_\-]?(\d+)", path.name, re.IGNORECASE)
