@@ -82,15 +82,18 @@ _CTX_LOCK = threading.Lock()
 
 
 def _context():
-    """A forkserver that imported the runner, the checks and nbclient once: each runner is forked from it."""
+    """A forkserver that imported the runner, the checks, nbclient and the judges' sympy and scipy once:
+    each runner (and each judge, forked from its runner) is forked from it."""
     global _CTX
     with _CTX_LOCK:
         if _CTX is None:
             import multiprocessing
 
             ctx = multiprocessing.get_context("forkserver")
+            # sympy and scipy.optimize: the judges' own imports (a derive task's formula, task 3.1's root);
+            # a judge is a child forked from the runner, so what it imports is imported again by the next
             ctx.set_forkserver_preload(["balancelab.course.runner", "balancelab.course.check", "nbclient",
-                                        "jupyter_client.manager", "nbformat"])
+                                        "jupyter_client.manager", "nbformat", "sympy", "scipy.optimize"])
             _CTX = ctx
         return _CTX
 
