@@ -1128,10 +1128,19 @@ class CapReached(Exception):
     pass
 raise CapReached("; the memory cap of the notebook's processes (1000 MB) was reached; "
                  "the in-memory folder /tmp reached its cap (256 MB)")"""
-#: item 4: the kernel starts without ipykernel's debugger (debugpy blocked: its import cost every kernel time)
-NO_DEBUGGER = """import sys
+#: item 4: the kernel starts without ipykernel's debugger (debugpy blocked: its import cost every kernel
+#: time) and with the grader's matplotlib font list (each kernel scanned the fonts again)
+NO_DEBUGGER = """import io, logging, sys
 if "debugpy" not in sys.modules or sys.modules["debugpy"] is not None:
-    raise RuntimeError("debugpy was not blocked")"""
+    raise RuntimeError("debugpy was not blocked")
+assert "matplotlib.font_manager" not in sys.modules
+_said = io.StringIO()
+_log = logging.getLogger("matplotlib.font_manager")
+_log.addHandler(logging.StreamHandler(_said))
+_log.setLevel(logging.INFO)
+import matplotlib.font_manager
+if "generated new fontManager" in _said.getvalue():
+    raise RuntimeError("the font list was built again")"""
 _GRADER_CAP_NOTES = ("the memory cap", "the in-memory folder", "the process cap", "output cap")
 
 
@@ -1145,7 +1154,8 @@ def test_student_id_column_roster_warnings_and_the_kernels_words_in_notes(tmp_pa
     * a notebook that hooks ``transform_cell``, ``sys.displayhook`` and ``events`` and raises an
       exception worded like cap notes gets no cap note: its words are quoted as its own;
     * a metadata lab tag that is no lab name leaves the file name's lab, with a note;
-    * the kernel starts without ipykernel's debugger (faster, and nothing grading needs).
+    * the kernel starts without ipykernel's debugger and with the grader's matplotlib font list
+      (both cost CPU in every kernel, for nothing grading needs).
     """
     if not sandbox_available():
         pytest.skip("bubblewrap is not available here")

@@ -60,7 +60,7 @@ from .sanitize import excerpt
 from .check.core import student_key
 from .intake import (MAX_NOTEBOOK, cheat_notes, find_submissions, identity, lab_sources, read_regular, read_roster,
                      resolve_lab, roster_problems)
-from .sandbox import NO_SANDBOX_WARNING, kernel_runs_as_nobody, precompile_package, sandbox_available
+from .sandbox import NO_SANDBOX_WARNING, font_list, kernel_runs_as_nobody, precompile_package, sandbox_available
 from .workers import ACTIVE, SCRATCH_PREFIX, clean_stale, forked_runner, remove_tree, scratch_root, stop_on_signal  # noqa: F401
 
 __all__ = ["STUDENT_VARIABLE", "GradeRow", "grade_namespace", "grade_answers", "resolve_lab", "grade_notebook", "derive_refusals",
@@ -162,7 +162,8 @@ def _runner(copy: Path, lab: str, sid: str, cell_timeout: int, wall: float, caps
     job = dict(notebook=str(copy), lab=lab, student=sid, share=str(share), cell_timeout=cell_timeout,
                caps=asdict(caps), cgroup={k: str(v) for k, v in cgroup.dirs.items()}, no_sandbox=not sandbox,
                scratch=str(scratch), notebook_timeout=notebook_timeout,
-               as_nobody=bool(sandbox and kernel_runs_as_nobody()))  # probed once, here
+               as_nobody=bool(sandbox and kernel_runs_as_nobody()),  # probed once, here
+               fonts=font_list() if sandbox else None)  # built once, here
     lines, ended, _ = forked_runner(job, wall, int(wall) + 30)
     return lines, ended, cgroup
 

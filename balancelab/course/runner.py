@@ -39,22 +39,14 @@ from pathlib import Path
 from .caps import Caps, Cgroup, cap_notes, measure_folders
 from .check.data import encode_answer
 from .sanitize import excerpt
-from .sandbox import NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited, sandbox_command
+from .sandbox import (KERNEL_START, NOBODY, SHARE, WORK, assume_kernel_user, kernel_runs_as_nobody, limited,
+                      sandbox_command)
 
 __all__ = ["export_source", "SandboxKernelManager", "run_notebook", "judge_tasks", "serve", "main"]
 
 # jsonschema (imported by nbformat) builds an IRI grammar for 4 s on import; nothing here validates an IRI
 sys.modules.setdefault("rfc3987_syntax", None)  # type: ignore[arg-type]  # None blocks the import on purpose
 
-#: How the kernel starts: as ``python -m ipykernel_launcher`` (the working folder off ``sys.path``), but
-#: with ``debugpy`` blocked: ipykernel imports it at start-up for a debugger that grading never uses
-#: (about 0.15 s of CPU per kernel).
-KERNEL_START = ("import sys\n"
-                "if sys.path[:1] == ['']:\n"
-                "    del sys.path[0]\n"
-                "sys.modules['debugpy'] = None\n"
-                "from ipykernel.kernelapp import launch_new_instance\n"
-                "launch_new_instance()\n")
 #: Largest export (bytes of answer data after one cell).
 EXPORT_CAP = 4 * 2 ** 20
 #: Seconds a cell may keep running after the interrupt at its time limit.
@@ -127,7 +119,7 @@ def _kernel_manager_class():
     class SandboxKernelManager(AsyncKernelManager):
         """A kernel started inside the sandbox, reached over unix sockets in ``share``."""
 
-        def setup(self, share: Path, caps: Caps, cgroup: Cgroup, sandbox: bool) -> None:
+        def setup(self, share: Path, caps: Caps, cgroup: Cgroup, sandbox: bool, fonts=None) -> None:
             # relative socket paths (this process works in ``share``): a unix socket path has at most 107 bytes
             self.transport, self.ip, self.sandboxed = "ipc", "k", sandbox
             self.connection_file = str(share / "kernel.json")
@@ -140,6 +132,9 @@ def _kernel_manager_class():
                 # a checkout (this grader's balancelab, bound alone at its own path): the kernel imports
                 # that one, not the one an editable install's finder may name elsewhere (unbound there)
                 env["PYTHONPATH"] = str(pkg.parent)
+            if sandbox and fonts:  # the grader's font list (a name and its text), read by the kernel at start
+                (share / Path(fonts[0]).name).write_text(fonts[1], encoding="utf-8")
+                env["BALANCELAB_FONTS"] = f"{SHARE}/{Path(fonts[0]).name}"
             cpu = 24 * 3600
             # with a cgroup the tree's memory is capped there; a process's address space (libraries and
             # thread arenas reserve far more than they use) then only needs a loose limit
@@ -307,7 +302,7 @@ def _run_cells(client, nb, cells: list, variables: list[str], cell_timeout: int,
 
 def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell_timeout: int = 60,
                  caps: Caps | None = None, sandbox: bool = True, cgroup: Cgroup | None = None,
-                 notebook_timeout: float | None = None) -> dict:
+                 notebook_timeout: float | None = None, fonts: tuple[str, str] | None = None) -> dict:
     """Execute a notebook cell by cell in a sandboxed kernel, exporting the answers after each cell.
 
     Parameters
@@ -329,6 +324,8 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     notebook_timeout : float, optional
         Limit of the whole notebook's cells (s): no cell starts after it, a cell that runs into it
         is interrupted; the status is then ``timeout`` and the answers given before are kept.
+    fonts : (str, str), optional
+        matplotlib's font list for a sandboxed kernel (:func:`~balancelab.course.sandbox.font_list`).
 
     Returns
     -------
@@ -348,7 +345,7 @@ def run_notebook(path: str | Path, variables: list[str], share: str | Path, cell
     nb.cells = [nbformat.v4.new_code_cell("")]
     cgroup = cgroup or Cgroup.attach({})
     km = SandboxKernelManager()
-    km.setup(share, caps, cgroup, sandbox)
+    km.setup(share, caps, cgroup, sandbox, fonts)
     client = _client_class(caps.output)(nb, km=km, timeout=cell_timeout, allow_errors=True,
                                         interrupt_on_timeout=True, shutdown_kernel="immediate",
                                         startup_timeout=120)
@@ -496,6 +493,12 @@ def _private_channel():
     return out
 
 
+def _fonts(value) -> tuple[str, str] | None:
+    """The job's font list as ``(name, text)``, or None."""
+    ok = isinstance(value, (list, tuple)) and len(value) == 2 and all(isinstance(v, str) for v in value)
+    return (value[0], value[1]) if ok else None
+
+
 def _grade(job: dict, emit) -> None:
     """Run and judge one notebook (``job``: the command line's options as a dict), reporting by ``emit``."""
     from . import check as _check  # the grader's own checks
@@ -508,7 +511,7 @@ def _grade(job: dict, emit) -> None:
     try:
         res = run_notebook(job["notebook"], variables, job["share"], int(job.get("cell_timeout", 60)), caps,
                            not job.get("no_sandbox", False), Cgroup.attach(job.get("cgroup", {})),
-                           job.get("notebook_timeout"))
+                           job.get("notebook_timeout"), _fonts(job.get("fonts")))
     except Exception as e:  # the kernel could not start, the notebook could not be read
         res = dict(status="error", answers={}, attempts={}, errors=[], peak=None, hits=[],
                    notes=[f"the notebook could not be run ({type(e).__name__})"])
