@@ -20,6 +20,10 @@ package byte-compiled once             4.5 -> 6.4   4.6 s                (not me
 package byte-compiled once, 6 nbs      11.4 -> 15.4 14.0 s               5.2 s
 package byte-compiled once             11.8 -> 12.5 10.4 s               4.22 s
 before, again (same hour)              14.8 -> 12.7 11.0 s               4.58 s
+session 8, before (same day, below)    10.3 -> 15.3 11.4 s               4.01 s
+judges' sympy/scipy pre-imported,      13.4 -> 9.9  8.2 s                3.85 s
+  kernel without debugpy
+and the font list built once           8.3 -> 11.4  6.9 s                3.60 s
 =====================================  ===========  ===================  =============
 
 CPU time is itself inflated and noisy at such loads (shared cores: the 6-notebook pair came out
@@ -27,6 +31,17 @@ the wrong way round); the 20-notebook pair measured back to back gives 0.36 s of
 notebook by the byte-compiled package, and 4.2 s of CPU per notebook, i.e. about 2.1 s per
 notebook on two idle cores (importing ``balancelab`` on the host: 2.0 s without
 ``__pycache__``, 1.2 s with it, at a load of 8).
+
+Session 8 (the three rows above the last line, measured one after the other): 4.0 -> 3.6 s of CPU
+per notebook, i.e. about 1.8 s per notebook on two idle cores. Where a lab-1 solution's CPU goes
+now (measured on the host, outside the sandbox): the notebook's own cells 2.5 s (the import cell
+0.6, the first explorer 1.15 with matplotlib's import and first drawing, the sympy cell 0.3, the
+second explorer 0.5); the kernel's start 0.45 s (ipykernel, IPython, zmq; debugpy no longer); the
+runner, the two bubblewrap steps and the judges the rest. A notebook with one empty cell costs
+1.3 s of CPU in all (grader start included). What was saved: a judge is a child forked from its
+runner, so task 1.2's judge imported sympy for every notebook (0.7 s; the forkserver now
+pre-imports it), every kernel scanned the fonts for matplotlib (0.2-0.3 s; the grader builds the
+list once) and imported debugpy (about 0.05 s).
 """
 from __future__ import annotations
 
