@@ -369,7 +369,11 @@ def _two_step_works(binds: tuple) -> bool:
     if bwrap_path() is None or shutil.which("setpriv") is None:
         return False
     roots = [binds[i + 2] for i, a in enumerate(binds) if a == "--ro-bind"]
-    probe = [sys.executable, "-I", "-c", f"import os, balancelab.course.check, ipykernel\nfor p in {roots!r}: os.listdir(p)"]
+    pkg = Path(__file__).resolve().parents[1]
+    # from a checkout the kernel imports this very package (runner: PYTHONPATH), so the probe does too
+    first = f"import sys\nsys.path.insert(0, {str(pkg.parent)!r})\n" if (pkg.parent / "pyproject.toml").is_file() else ""
+    probe = [sys.executable, "-I", "-c",
+             first + f"import os, balancelab.course.check, ipykernel\nfor p in {roots!r}: os.listdir(p)"]
     try:
         r = subprocess.run(_nobody_command(probe, [], None, []), capture_output=True, timeout=120)
     except (OSError, subprocess.TimeoutExpired):
