@@ -71,7 +71,7 @@ def _parse_string(text: str, names: Sequence[str], what: str):
         raise AnswerError(f"{what.capitalize()} could not be read as a formula.", _hint(names)) from err
 
 
-def read_expression(answer: Any, names: Sequence[str] | str, what: str = "your formula"):
+def read_expression(answer: Any, names: Sequence[str] | str, what: str = "your formula") -> Any:
     """The student's formula as a sympy expression whose symbols are plain ``Symbol(name)``.
 
     Parameters
@@ -161,7 +161,7 @@ def _kind(node) -> str | None:
     return None
 
 
-def evaluate(expr, values: Mapping[str, np.ndarray]) -> np.ndarray:
+def evaluate(expr: Any, values: Mapping[str, np.ndarray]) -> np.ndarray:
     """The value of an expression read by :func:`read_expression` at arrays of its symbols' values.
 
     Parameters
