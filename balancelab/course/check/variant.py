@@ -290,6 +290,8 @@ def _compare(answer, expected, ranges, what: str, points: int, rtol: float, seed
     names = tuple(ranges)
     mine = read_expression(answer, names, what)
     ref = read_expression(expected, names, "the reference")
+    if not mine.free_symbols and ref.free_symbols:
+        return "is a number: the task asks for a formula in its symbols"
     at = _instances(ranges, points, seed)
     e, a = evaluate(ref, at), evaluate(mine, at)
     valid = np.isfinite(e)
@@ -340,6 +342,8 @@ def equivalent_parts(answer: Any, expected: Mapping[str, Any], ranges: Mapping[s
     import sympy as sp
 
     keys = tuple(expected)
+    if isinstance(answer, sp.Tuple):  # sympify of a tuple
+        answer = tuple(answer)
     if isinstance(answer, dict):
         missing = [k for k in keys if k not in answer]
         if missing:
@@ -361,6 +365,6 @@ def equivalent_parts(answer: Any, expected: Mapping[str, Any], ranges: Mapping[s
     found = [_compare(p, expected[k], ranges, f"your {k}", options["points"], options["rtol"], options["seed"])
              for k, p in zip(keys, parts)]
     if not any(found):
-        return True, f"{what.capitalize()} is equivalent to the expected formulas.", ""
+        return True, f"{what.capitalize()}: every formula is equivalent to the expected one.", ""
     notes = " ".join(f"Your {k} {f or 'is equivalent'}." for k, f in zip(keys, found))
     return False, notes, hint or "Derive each formula from the potential energy, one coefficient at a time."
