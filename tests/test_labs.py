@@ -329,7 +329,7 @@ SHORTCUT_CELLS = {
     "6.4": ['import sympy as sp\nimport balancelab as bl\nfrom balancelab.course.check import check\n'
             'eqs = [e.lhs for e in bl.singh.scissors_lift().balance_conditions()]\n'
             'syms = {str(s): s for e in eqs for s in e.free_symbols}\n'
-            'sol = sp.solve(eqs, [syms["k_1"], syms["k_2"]], dict=True)[0]\n'
+            'sol = sp.solve(eqs[:2], [syms["k_1"], syms["k_2"]], dict=True)[0]\n'
             'stage_rates = (sol[syms["k_1"]], sol[syms["k_2"]])\nverdict = check("6.4", stage_rates)'],
     # the solver of chapter 7 on the published arm, its numeric rates handed in as the formulas
     "7.5": ['import balancelab as bl\n'
