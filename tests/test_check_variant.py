@@ -266,3 +266,17 @@ def test_task_3_4s_published_formula_fails_every_student():
         v = task_numbers("3.4", sid)
         assert not core.check_data("3.4", data.encode_answer(published), sid).correct
         assert core.check_data("3.4", data.encode_answer(lab3._free_length_torque(v["angle"], v["torque"])), sid).correct
+
+
+@pytest.mark.parametrize("tid", ["3.4", "5.4", "6.4", "7.5"])
+def test_the_variant_judges_are_quick_on_right_wrong_and_hostile_answers(tid):
+    """The grader caps a judge in a child process; these judges stay far below the cap by themselves."""
+    from balancelab.course.check import core, data
+
+    parts = {"3.4": 1, "5.4": 2, "6.4": 2, "7.5": 3}[tid]
+    huge = sp.Add(*[sp.Symbol("g") ** i for i in range(550)])
+    for answer in ("g", sp.Integer(3), huge, "9**9**9"):
+        encoded = data.encode_answer(answer if parts == 1 else (answer,) * parts)
+        start = time.perf_counter()
+        assert not core.check_data(tid, encoded).correct
+        assert time.perf_counter() - start < 3.0, (tid, str(answer)[:20])
