@@ -186,6 +186,8 @@ RIGHT = {
     "3.1": _pulley_radius,
     "3.2": lambda: -400.0 * 0.05 / 250.0,
     "3.3": _approximate_spring,
+    # the free length's part -k l_0 d of the spring's energy, d = sqrt(b^2 + c^2 - 2 b c sin(theta)), k b c = m g r
+    "3.4": lambda: sp.sympify("m*g*r*l_0*cos(theta)/sqrt(b**2 + c**2 - 2*b*c*sin(theta))"),
     "4.1": _parallelogram_rates,
     "4.2": lambda: float(np.hypot(10.0 * 1.0 + 20.0 * 1.5, 10.0 * 0.5) + 20.0 * 2.0),
     "4.3": lambda: {"a_x": (1.4, 1.5, -1.5)},
@@ -195,14 +197,24 @@ RIGHT = {
     "5.1": _crank_rate,
     "5.2": lambda: float(np.hypot(40.0, 5.0) + 40.0 + 10.0 * 0.5),
     "5.3": lambda: {"base": "A", "h": 0.15},
+    # the lecture's numbering (crank 2, coupler 3, rocker 4): the coupler's mass split m_3 (1 - r_3/l_3) at D
+    # and m_3 r_3/l_3 at C, each link then a single link with k b c = g M
+    "5.4": lambda: sp.sympify(("g*(m_2*r_2 + m_3*(1 - r_3/l_3)*l_2)/(b_A*c_A)", "g*(m_4*r_4 + m_3*r_3/l_3*l_4)/(b_B*c_B)")),
     "6.1": lambda: scissors_lift(length=0.5, payload_mass=8.0).parameters["k1"],
     "6.2": lambda: peaucellier_board().parameters["k1"] * (0.2 / 0.25) ** 2,
     "6.3": lambda: {"l10": 0.42, "k1": scissors_lift(length=0.5, payload_mass=8.0).parameters["k1_l10"] / 0.42,
                     "k2": scissors_lift(length=0.5, payload_mass=8.0).parameters["k1_l10"] / 0.42},
+    # Singh's lift (2 stages, spring 1 from stage 1 to 2): gravity g a sin(theta) (4 m_a + 2 M), spring 1
+    # a sin(theta) long, spring 2 a cos(theta) long: k_1 l_10 = g (4 m_a + 2 M), k_2 = k_1
+    "6.4": lambda: sp.sympify(("g*(4*m_a + 2*M)/l_10", "g*(4*m_a + 2*M)/l_10")),
     "7.1": _lab7_free_choices,
     "7.2": _lab7_least_stiffness,
     "7.3": _lab7_lamp_springs,
     "7.4": lambda: (1.2 * 0.125 + 0.8 * (1 - 0.3 / 0.7) * 0.25) / 0.5,  # crank's moment, counterweight 0.5 m behind
+    # the published arm (springs 2 and 3 "above", with the lamp): sin(theta_2), cos(theta_2 - theta_1) and
+    # sin(theta_1) coefficients of the energy, by hand
+    "7.5": lambda: sp.sympify(("(g*(m_1*p_1 + (m_2 + m_L)*l_1) - g*(m_2*p_2 + m_L*l_2)*l_1/s_2)/(a*s_1)",
+                               "g*(m_2*p_2 + m_L*l_2)/(a*s_2)", "g*(m_2*p_2 + m_L*l_2)*l_1/(a*c*s_3)")),
     "8.1": lab8_reference_springs,
     "8.2": _lab8_study,
     "8.3": _lab8_shoulder_torque,

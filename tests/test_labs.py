@@ -314,8 +314,33 @@ SHORTCUT_CELLS = {
             'sol = sp.solve(eqs, [syms["a_y"], syms["k"]], dict=True)\n'
             'sol = [s for s in sol if s[syms["k"]] != 0][0]\n'
             'lever_conditions = (sol[syms["a_y"]], sol[syms["k"]])\nverdict = check("2.2", lever_conditions)'],
+    # the library's symbolic energy of the lever with a free length, differentiated
+    "3.4": ['import sympy as sp\nfrom balancelab.course.check import check, lab2_lever\n'
+            'V = lab2_lever(196.2, (0.2, 0.0), (0.0, 0.3), W=19.62, l=0.5, free_length=0.1).potential_energy_symbolic()\n'
+            'free_length_torque = sp.diff(V, *[s for s in V.free_symbols if "theta" in str(s)])\n'
+            'verdict = check("3.4", free_length_torque)'],
     "4.5": ['from balancelab.methods.singh import serial_2r_min_preload\nfrom balancelab.course.check import check\n'
             'pe_min_formula = serial_2r_min_preload().parameters["PE_min"]\nverdict = check("4.5", pe_min_formula)'],
+    # the library's two-spring four-bar, its numeric rates handed in as the formulas
+    "5.4": ['from balancelab.methods.lecture import fourbar_two_springs\nfrom balancelab.course.check import check\n'
+            'd = fourbar_two_springs(coms=((0.15, 0.0), (0.4, 0.0), (0.3, 0.0)))\n'
+            'fourbar_rates = (d.parameters["k2"], d.parameters["k4"])\nverdict = check("5.4", fourbar_rates)'],
+    # the library's symbolic conditions of Singh's lift, solved for the rates
+    "6.4": ['import sympy as sp\nimport balancelab as bl\nfrom balancelab.course.check import check\n'
+            'eqs = [e.lhs for e in bl.singh.scissors_lift().balance_conditions()]\n'
+            'syms = {str(s): s for e in eqs for s in e.free_symbols}\n'
+            'sol = sp.solve(eqs[:2], [syms["k_1"], syms["k_2"]], dict=True)[0]\n'
+            'stage_rates = (sol[syms["k_1"]], sol[syms["k_2"]])\nverdict = check("6.4", stage_rates)'],
+    # the solver of chapter 7 on the published arm, its numeric rates handed in as the formulas
+    "7.5": ['import balancelab as bl\n'
+            'from balancelab.course.check import check\n'
+            'from balancelab.course.check.lab7 import lab7_own_arm\n'
+            'values = dict(g=9.81, m_1=1.5, p_1=0.2, l_1=0.4, m_2=1.0, p_2=0.15, m_L=0.5, l_2=0.35, a=0.2, s_1=0.15,\n'
+            '              s_2=0.25, s_3=0.1, c=0.05)\n'
+            'arm = lab7_own_arm("above", True, values)\n'
+            'candidates = [((s.a.body, s.a.point), (s.b.body, s.b.point)) for s in arm.springs]\n'
+            'own_rates = tuple(s.k for s in bl.balance(arm.replace(springs=[]), springs=candidates).springs)\n'
+            'verdict = check("7.5", own_rates)\n'],
     "8.4": ['import numpy as np\nfrom balancelab.course.check import check, lab8\n'
             'from balancelab.methods.practice import forces\n'
             'torque_formula = float(forces.generalized_force(lab8.rate_error_arm(0.02), np.array([[0.0, 0.0]]))[1][0, 0])\n'
@@ -350,6 +375,10 @@ def test_derive_tasks_refuse_the_obvious_library_call(tid):
     lambda s: __import__("balancelab").methods.singh.serial_2r_min_preload(
         weights=(s("W_1"), s("W_2")), coms=((s("p_x1"), s("p_y1")), (s("p_x2"), 0.0)), length=s("l")).parameters["PE_min"],
     lambda s: __import__("balancelab").course.check.lab8.rate_error_arm(s("epsilon")),
+    lambda s: __import__("balancelab").lecture.fourbar_two_springs(masses=(s("m_2"), s("m_3"), s("m_4"))),
+    lambda s: __import__("balancelab").singh.scissors_lift(length=s("a"), arm_mass=s("m_a"), payload_mass=s("M")),
+    lambda s: __import__("balancelab").course.check.lab7.lab7_own_arm(
+        "above", True, {n: s(n) for n in __import__("balancelab").course.check.lab7.LAB7_OWN_SYMBOLS}),
 ])
 def test_the_library_does_not_derive_formulas_from_symbols(call):
     """The solvers a derive task disallows take numbers only: fed the task's sympy symbols, they refuse

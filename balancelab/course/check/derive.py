@@ -20,7 +20,14 @@ __all__ = ["SHORTCUTS", "shortcuts"]
 SHORTCUTS: dict[str, tuple[str, ...]] = {
     "1.2": ("single_link_counterweight", "balance", "balance_conditions", "solve_counterweights"),
     "2.2": ("balance_conditions", "generalized_lever", "single_link_spring", "balance", "lacoste_lever"),
+    "3.4": ("lab2_lever", "lab3_torque_error", "generalized_force", "potential_energy_symbolic",
+            "balance_conditions", "approximate_lever", "_free_length_torque"),
     "4.5": ("serial_2r_min_preload", "PE_min", "balance_report", "balance", "singh_fourbar"),
+    "5.4": ("fourbar_two_springs", "equivalent_masses", "link_spring", "fourbar_counterweights", "balance",
+            "balance_conditions", "_fourbar_rates"),
+    "6.4": ("scissors_lift", "lab6_scissors", "balance_conditions", "potential_energy_symbolic", "balance",
+            "_stage_rates"),
+    "7.5": ("balance", "balance_conditions", "potential_energy_symbolic", "free_choices", "_own_rates"),
     "8.4": ("rate_error_arm", "generalized_force", "balance_report", "potential_energy", "balance"),
     "9.3": ("noncircular_pulley", "potential_energy_symbolic", "balance_conditions", "balance"),
 }

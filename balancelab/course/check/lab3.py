@@ -1,4 +1,8 @@
-"""Lab 3, building a ZFL spring: a string over a pulley, a negative free length, an ordinary spring."""
+"""Lab 3, building a ZFL spring: a string over a pulley, a negative free length, an ordinary spring.
+
+Task 3.4 (derive) asks for the torque error that a free length leaves on the lever designed for a
+ZFL spring, as a formula, in the student's own angle convention and sign (a personal variant).
+"""
 from __future__ import annotations
 
 from typing import Any
@@ -13,9 +17,10 @@ from ...core.elements import G
 from ...methods.realize import negative_free_length_partner, pulley_balance_error, pulley_lever
 from .answers import numeric, spring
 from .core import register_task
+from .variant import equivalent
 from .lab2 import lab2_lever
 
-__all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "lab3_torque_error"]
+__all__ = ["LAB3_LEVER", "PARTNER_SPRINGS", "LAB3_FREE_LENGTH_SYMBOLS", "lab3_torque_error"]
 
 #: Lab 3's lever (kg, m) and its limits: torque errors are fractions of ``m g r`` with
 #: ``r = length``; spring ends within ``reach_max`` (m) of the pivot in task 3.3.
@@ -125,3 +130,46 @@ def _t33(answer):
     hint = "" if ok else ("Start from the ZFL design and move the anchor and the rate to absorb the "
                           "free length; plot the torque over the range.")
     return ok, msg + ".", hint
+
+
+# --------------------------------------------------- 3.4: the free length's torque error, as a formula
+
+#: Task 3.4's symbols and the ranges the judge draws them from (kg, m/s^2, m, rad).
+LAB3_FREE_LENGTH_SYMBOLS: dict[str, tuple[float, float]] = dict(
+    m=(0.5, 5.0), g=(5.0, 15.0), r=(0.2, 1.0), b=(0.1, 0.5), c=(0.05, 0.3), l_0=(0.01, 0.2), theta=(-1.2, 1.2))
+
+
+def _free_length_numbers(rng) -> dict:
+    """Task 3.4's variant: the published one (angle from the horizontal, dV/dtheta), or another (from ``rng``)."""
+    if rng is None:
+        return dict(angle="horizontal", torque="dV/dtheta")
+    others = [("horizontal", "holding"), ("vertical", "dV/dtheta"), ("vertical", "holding")]
+    angle, torque = others[int(rng.integers(len(others)))]
+    return dict(angle=angle, torque=torque)
+
+
+def _free_length_torque(angle: str, torque: str):
+    """Task 3.4's reference: the torque error of the ZFL-designed lever built with a spring of free length ``l_0``."""
+    import sympy as sp
+
+    if angle not in ("horizontal", "vertical") or torque not in ("dV/dtheta", "holding"):
+        raise ValueError(f"angle must be 'horizontal' or 'vertical' and torque 'dV/dtheta' or 'holding', "
+                         f"got {angle!r}, {torque!r}")
+    m, g, r, b, c, l0, th = sp.symbols("m g r b c l_0 theta")
+    # k b c = m g r balances the ZFL part; the free length adds -k l_0 d(length)/dtheta
+    if angle == "horizontal":  # link along (cos, sin): spring length^2 = b^2 + c^2 - 2 b c sin(theta)
+        dv = m * g * r * l0 * sp.cos(th) / sp.sqrt(b ** 2 + c ** 2 - 2 * b * c * sp.sin(th))
+    else:  # theta from the upward vertical, clockwise: link along (sin, cos)
+        dv = -m * g * r * l0 * sp.sin(th) / sp.sqrt(b ** 2 + c ** 2 - 2 * b * c * sp.cos(th))
+    return dv if torque == "dV/dtheta" else -dv
+
+
+@register_task("3.4", "the torque error of the lever's spring built with a free length, as a formula",
+               "free_length_torque", "symbolic",
+               "a sympy expression in m, g, r, b, c, l_0 and theta for your variant (task_numbers('3.4')); any "
+               "equivalent form accepted; derived by hand: a cell that calls the library's solvers is refused",
+               numbers=_free_length_numbers)
+def _t34(answer, variant):
+    return equivalent(answer, _free_length_torque(variant["angle"], variant["torque"]), LAB3_FREE_LENGTH_SYMBOLS,
+                      "your torque", hint="Write the spring's energy k (d - l_0)^2 / 2 with d its length; the ZFL part "
+                                          "is balanced, so only -k l_0 d is left. Mind your angle and your sign.")

@@ -1,5 +1,11 @@
-"""Lab 5, four-bars: the lecture's two-spring four-bar, Singh's four-bar, Deepak's technique 2."""
+"""Lab 5, four-bars: the lecture's two-spring four-bar, Singh's four-bar, Deepak's technique 2.
+
+Task 5.4 (derive) asks for the lecture's two spring rates as formulas in the student's own numbering
+of the links (a personal variant: a formula copied from the chapter, in its numbering, is wrong).
+"""
 from __future__ import annotations
+
+import itertools
 
 from typing import Any
 
@@ -11,8 +17,9 @@ from ...methods.lecture import fourbar_two_springs
 from ...methods.singh import singh_fourbar
 from .answers import as_mapping, design_balanced, numeric, quantity
 from .core import AnswerError, register_task
+from .variant import equivalent_parts
 
-__all__ = ["LAB5_TECHNIQUE2", "lab5_technique2"]
+__all__ = ["LAB5_TECHNIQUE2", "LAB5_LINKS", "lab5_technique2", "lab5_symbol_ranges"]
 
 #: Lab 5's spring-loaded four-bar (technique 2) and the box its springs must fit in (m, N/m).
 LAB5_TECHNIQUE2: dict[str, Any] = dict(K=(0.1, -0.2), k_l=100.0, box=((-0.25, -0.35), (0.6, 0.35)), k_max=400.0)
@@ -115,3 +122,71 @@ def _t53(answer):
             (bool(np.all(ext[0] >= lo - 1e-9) and np.all(ext[1] <= hi + 1e-9)),
              "a spring end leaves the box")]
     return design_balanced(d, cons)
+
+
+# ------------------------------------------------------- 5.4: the two springs' rates in your link numbering
+
+#: Task 5.4's links, in the lecture's numbering (the ground is link 1).
+LAB5_LINKS = ("crank", "coupler", "rocker")
+
+
+def _numbering_numbers(rng) -> dict:
+    """Task 5.4's link numbering: the lecture's (crank 2, coupler 3, rocker 4), or another (from ``rng``)."""
+    if rng is None:
+        return dict(numbering={"crank": 2, "coupler": 3, "rocker": 4})
+    orders = [p for p in itertools.permutations((2, 3, 4)) if p != (2, 3, 4)]
+    order = orders[int(rng.integers(len(orders)))]
+    return dict(numbering=dict(zip(LAB5_LINKS, order)))
+
+
+def lab5_symbol_ranges(numbering: dict) -> dict[str, tuple[float, float]]:
+    """Task 5.4's symbols and the ranges the judge draws them from (m, kg, m/s^2); the same for every numbering.
+
+    Parameters
+    ----------
+    numbering : dict
+        ``{"crank": n, "coupler": n, "rocker": n}``, a permutation of 2, 3, 4
+        (``task_numbers("5.4")["numbering"]``).
+
+    Returns
+    -------
+    dict
+        ``g``, ``m_i``, ``l_i``, ``r_i`` (i = 2, 3, 4) and ``b_A, c_A, b_B, c_B``.
+
+    Examples
+    --------
+    >>> sorted(lab5_symbol_ranges({"crank": 3, "coupler": 4, "rocker": 2}))[:4]
+    ['b_A', 'b_B', 'c_A', 'c_B']
+    """
+    if not isinstance(numbering, dict) or sorted(numbering) != sorted(LAB5_LINKS) \
+            or sorted(numbering.values()) != [2, 3, 4]:
+        raise ValueError(f"numbering must map crank, coupler and rocker to 2, 3, 4 (each once), got {numbering!r}")
+    spans = dict(g=(5.0, 15.0), b_A=(0.05, 0.4), c_A=(0.05, 0.4), b_B=(0.05, 0.4), c_B=(0.05, 0.4))
+    for i in (2, 3, 4):
+        spans.update({f"m_{i}": (0.3, 4.0), f"l_{i}": (0.2, 1.0), f"r_{i}": (0.02, 0.5)})
+    return spans
+
+
+def _fourbar_rates(numbering: dict) -> dict:
+    """Task 5.4's reference ``{"k_A": expr, "k_B": expr}`` in the student's numbering."""
+    import sympy as sp
+
+    lab5_symbol_ranges(numbering)
+    m, l, r = ({link: sp.Symbol(f"{q}_{numbering[link]}") for link in LAB5_LINKS} for q in "mlr")
+    g, bA, cA, bB, cB = sp.symbols("g b_A c_A b_B c_B")
+    share = r["coupler"] / l["coupler"]  # the coupler's mass splits between D and C in this ratio
+    crank = m["crank"] * r["crank"] + m["coupler"] * (1 - share) * l["crank"]
+    rocker = m["rocker"] * r["rocker"] + m["coupler"] * share * l["rocker"]
+    return {"k_A": g * crank / (bA * cA), "k_B": g * rocker / (bB * cB)}
+
+
+@register_task("5.4", "the two spring rates of the lecture's four-bar as formulas, in your link numbering",
+               "fourbar_rates", "symbolic",
+               "a tuple (k_A, k_B) of sympy expressions in g, m_i, l_i, r_i (i = 2, 3, 4 in your numbering: "
+               "task_numbers('5.4')), b_A, c_A, b_B, c_B; any equivalent form accepted; derived by hand: a cell "
+               "that calls the library's solvers is refused", numbers=_numbering_numbers)
+def _t54(answer, numbers):
+    numbering = numbers["numbering"]
+    return equivalent_parts(answer, _fourbar_rates(numbering), lab5_symbol_ranges(numbering), "your rates",
+                            hint="Replace the coupler by equivalent masses at D and C; then each of crank and rocker "
+                                 "is a single link balanced by one ZFL spring. Mind which number is which link.")

@@ -1,4 +1,9 @@
-"""Lab 6, scissors and Peaucellier-Lipkin: Singh's projector lift and writing board."""
+"""Lab 6, scissors and Peaucellier-Lipkin: Singh's projector lift and writing board.
+
+Task 6.4 (derive) asks for the spring conditions of a scissors lift of the student's own number of
+stages, with spring 1 spanning the student's own stages (a personal variant: Singh's lift, whose
+conditions the library prints, is the published variant only).
+"""
 from __future__ import annotations
 
 import math
@@ -8,8 +13,9 @@ from ...core.elements import Spring
 from ...methods.singh import peaucellier_board, scissors_lift
 from .answers import as_mapping, design_balanced, numeric, quantity
 from .core import AnswerError, register_task
+from .variant import equivalent_parts
 
-__all__ = ["LAB6_SCISSORS", "LAB6_LIFT", "LAB6_BOARD", "lab6_scissors"]
+__all__ = ["LAB6_SCISSORS", "LAB6_LIFT", "LAB6_BOARD", "LAB6_STAGE_SYMBOLS", "lab6_scissors"]
 
 #: Lab 6's projector lift (m, kg) and the limits of its design task (N/m, m).
 LAB6_SCISSORS = dict(length=0.5, payload_mass=8.0, k_max=600.0, l10_max=0.45)
@@ -105,3 +111,41 @@ def _t63(answer):
              f"a spring stiffer than {p['k_max']:g} N/m"),
             (l10 <= p["l10_max"] + 1e-12, f"l10 longer than {p['l10_max']} m")]
     return design_balanced(d, cons)
+
+
+# ------------------------------------------------------------ 6.4: your scissors' spring conditions
+
+#: Task 6.4's symbols and the ranges the judge draws them from (m, kg, m/s^2).
+LAB6_STAGE_SYMBOLS: dict[str, tuple[float, float]] = dict(g=(5.0, 15.0), a=(0.2, 1.0), l_10=(0.05, 0.5),
+                                                          m_a=(0.2, 3.0), M=(0.5, 30.0))
+
+
+def _stages_numbers(rng) -> dict:
+    """Task 6.4's lift: Singh's (2 stages, spring 1 up to stage 2), or another (from ``rng``)."""
+    if rng is None:
+        return dict(stages=2, upper=2)
+    variants = [(n, j) for n in (2, 3, 4) for j in range(2, n + 1) if (n, j) != (2, 2)]
+    stages, upper = variants[int(rng.integers(len(variants)))]
+    return dict(stages=stages, upper=upper)
+
+
+def _stage_rates(stages: int, upper: int) -> dict:
+    """Task 6.4's reference ``{"k_1": expr, "k_2": expr}`` for ``stages`` stages, spring 1 up to stage ``upper``."""
+    import sympy as sp
+
+    if stages not in (2, 3, 4) or upper not in range(2, stages + 1):
+        raise ValueError(f"stages must be 2..4 and upper 2..stages, got {stages!r}, {upper!r}")
+    g, l10, ma, M = sp.symbols("g l_10 m_a M")
+    # the arms' centres of mass at (i - 1/2) a sin(theta), the platform at n a sin(theta): g a sin(theta) (m_a n^2 + M n)
+    k1 = g * stages * (ma * stages + M) / ((upper - 1) * l10)
+    return {"k_1": k1, "k_2": (upper - 1) ** 2 * k1}
+
+
+@register_task("6.4", "the spring conditions of your own scissors lift", "stage_rates", "symbolic",
+               "a tuple (k_1, k_2) of sympy expressions in g, a, l_10, m_a, M for your lift (task_numbers('6.4')); "
+               "any equivalent form accepted; derived by hand: a cell that calls the library's solvers is refused",
+               numbers=_stages_numbers)
+def _t64(answer, lift):
+    return equivalent_parts(answer, _stage_rates(lift["stages"], lift["upper"]), LAB6_STAGE_SYMBOLS, "your rates",
+                            hint="Write every height as a multiple of a sin(theta); the sin^2 terms fix k_2 / k_1 and "
+                                 "the sin terms fix k_1 l_10.")

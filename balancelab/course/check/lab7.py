@@ -13,7 +13,10 @@ it needs from the answer (plain numbers, strings and tuples) and the library:
   report;
 * 7.4 (sliders): the least counter mass that balances lab 7's slider-crank
   (:func:`lab7_slider_crank`, :data:`LAB7_SLIDER`) with one counterweight on the crank inside
-  the lab's box.
+  the lab's box;
+* 7.5 (derive, personal variant): the three ZFL spring rates that balance a 2R arm
+  (:func:`lab7_own_arm`) as formulas, for the student's own arrangement of the springs and with or
+  without the lamp, judged by equivalence on random instances (:mod:`.variant`).
 """
 from __future__ import annotations
 
@@ -30,9 +33,10 @@ from ...mechanisms.linkage import Linkage
 from ...methods.general.examples import all_pairs, arm_3r, parallelogram_lamp
 from .answers import design_balanced, numeric, point, quantity
 from .core import AnswerError, register_task
+from .variant import equivalent_parts
 
-__all__ = ["LAB7_ARM", "LAB7_LAMP", "LAB7_SLIDER", "lab7_arm", "lab7_candidates", "lab7_slider_crank",
-           "lamp_with_springs"]
+__all__ = ["LAB7_ARM", "LAB7_LAMP", "LAB7_SLIDER", "LAB7_OWN_SYMBOLS", "LAB7_OWN_ARRANGEMENTS", "lab7_arm",
+           "lab7_candidates", "lab7_slider_crank", "lamp_with_springs", "lab7_own_arm"]
 
 #: Lab 7's 3R arm (m, kg): other numbers than chapter 7's, so the chapter does not print the answers.
 LAB7_ARM: dict[str, Any] = dict(lengths=(0.45, 0.35, 0.25), masses=(1.8, 1.2, 0.8), lamp=0.4)
@@ -230,3 +234,111 @@ def _t73(answer):
             (all(on_ground) and all(inside), "every anchor inside the box"),
             (all(s.k <= lim["k_max"] * (1 + 1e-9) for s in design.springs), f"k at most {lim['k_max']:g} N/m")]
     return design_balanced(design, cons)
+
+
+# ------------------------------------------------------------------ 7.5: derive the conditions of your own arm
+
+#: Task 7.5's symbols and the ranges the judge draws them from (SI units: m, kg, m/s^2).
+LAB7_OWN_SYMBOLS: dict[str, tuple[float, float]] = dict(
+    g=(5.0, 15.0), m_1=(0.3, 4.0), p_1=(0.05, 0.4), l_1=(0.2, 0.6), m_2=(0.3, 4.0), p_2=(0.05, 0.4),
+    m_L=(0.1, 2.0), l_2=(0.2, 0.6), a=(0.05, 0.4), s_1=(0.05, 0.4), s_2=(0.05, 0.4), s_3=(0.05, 0.4),
+    c=(0.02, 0.2))
+#: The arrangements of task 7.5: where spring 2 runs and where spring 3 starts on the upper link.
+LAB7_OWN_ARRANGEMENTS = ("above", "below")
+
+
+def _own_numbers(rng) -> dict:
+    """Task 7.5's personal variant: the published one, or one of the other three (from ``rng``)."""
+    if rng is None:
+        return dict(arrangement="above", lamp=True)
+    others = [(arr, lamp) for arr in LAB7_OWN_ARRANGEMENTS for lamp in (True, False) if (arr, lamp) != ("above", True)]
+    arrangement, lamp = others[int(rng.integers(len(others)))]
+    return dict(arrangement=arrangement, lamp=lamp)
+
+
+def _own_variant(arrangement: str, lamp: bool) -> tuple[str, bool]:
+    if arrangement not in LAB7_OWN_ARRANGEMENTS:
+        raise ValueError(f"arrangement must be one of {LAB7_OWN_ARRANGEMENTS}, got {arrangement!r}")
+    if not isinstance(lamp, (bool, np.bool_)):
+        raise TypeError(f"lamp must be True or False, got {lamp!r}")
+    return arrangement, bool(lamp)
+
+
+def lab7_own_arm(arrangement: str, lamp: bool, values: dict, rates: tuple = (1.0, 1.0, 1.0)) -> Design:
+    """Task 7.5's 2R arm with three ZFL springs, for numbers of its symbols (to test a derived formula).
+
+    The upper link turns about the ground pivot at the origin (length ``l_1``, mass ``m_1`` at
+    ``p_1`` along it); the forearm turns about the elbow (mass ``m_2`` at ``p_2``; with ``lamp``,
+    a lamp ``m_L`` at ``l_2``). Spring 1 runs from the ground point ``(0, a)`` to ``(s_1, 0)`` on
+    the upper link. ``"above"``: spring 2 from ``(0, a)`` to ``(s_2, 0)`` on the forearm, spring 3
+    from ``(l_1 + c, 0)`` on the upper link (past the elbow) to ``(s_3, 0)`` on the forearm.
+    ``"below"``: spring 2 from ``(0, -a)`` to ``(-s_2, 0)`` on the forearm (behind the elbow),
+    spring 3 from ``(l_1 - c, 0)`` on the upper link to ``(s_3, 0)`` on the forearm.
+
+    Parameters
+    ----------
+    arrangement : {"above", "below"}
+        Where springs 2 and 3 run (``task_numbers("7.5")["arrangement"]``).
+    lamp : bool
+        Whether the forearm carries the lamp (``task_numbers("7.5")["lamp"]``).
+    values : dict
+        A number for each symbol of :data:`LAB7_OWN_SYMBOLS` (m, kg, m/s^2; ``m_L`` and ``l_2``
+        only with a lamp).
+    rates : (float, float, float)
+        The rates ``k_1, k_2, k_3`` of the springs (N/m), > 0.
+
+    Returns
+    -------
+    Design
+        Coordinates: the absolute angles of the upper link and the forearm.
+
+    Examples
+    --------
+    >>> v = dict(g=9.81, m_1=1.5, p_1=0.2, l_1=0.4, m_2=1.0, p_2=0.15, m_L=0.5, l_2=0.35, a=0.2,
+    ...          s_1=0.15, s_2=0.25, s_3=0.1, c=0.05)
+    >>> lab7_own_arm("above", True, v).q_names
+    ('theta_1', 'theta_2')
+    """
+    arrangement, lamp = _own_variant(arrangement, lamp)
+    v = {k: float(values[k]) for k in LAB7_OWN_SYMBOLS if lamp or k not in ("m_L", "l_2")}
+    lk = Linkage("lab 7 own arm")
+    lk.revolute("ground", (0.0, 0.0), "upper", (0.0, 0.0))
+    lk.revolute("upper", (v["l_1"], 0.0), "fore", (0.0, 0.0))
+    lk.mass("upper", v["m_1"], com=(v["p_1"], 0.0))
+    lk.mass("fore", v["m_2"], com=(v["p_2"], 0.0))
+    if lamp:
+        lk.mass("fore", v["m_L"], com=(v["l_2"], 0.0), name="lamp")
+    k1, k2, k3 = (float(k) for k in rates)
+    side = 1.0 if arrangement == "above" else -1.0
+    lk.spring("ground", (0.0, v["a"]), "upper", (v["s_1"], 0.0), k=k1, name="k_1")
+    lk.spring("ground", (0.0, side * v["a"]), "fore", (side * v["s_2"], 0.0), k=k2, name="k_2")
+    lk.spring("upper", (v["l_1"] + side * v["c"], 0.0), "fore", (v["s_3"], 0.0), k=k3, name="k_3")
+    return lk.build(name=f"lab 7 own arm ({arrangement}, {'with' if lamp else 'without'} lamp)")
+
+
+def _own_rates(arrangement: str, lamp: bool) -> dict:
+    """Task 7.5's reference rates ``{"k_1": expr, "k_2": expr, "k_3": expr}`` in the symbols of :data:`LAB7_OWN_SYMBOLS`."""
+    import sympy as sp
+
+    arrangement, lamp = _own_variant(arrangement, lamp)
+    s = {n: sp.Symbol(n) for n in LAB7_OWN_SYMBOLS}
+    m_lamp = s["m_L"] if lamp else 0
+    upper = s["g"] * (s["m_1"] * s["p_1"] + (s["m_2"] + m_lamp) * s["l_1"])  # the sin(theta_1) coefficient of gravity
+    fore = s["g"] * (s["m_2"] * s["p_2"] + m_lamp * s["l_2"])  # that of sin(theta_2)
+    k2 = fore / (s["a"] * s["s_2"])
+    sign = -1 if arrangement == "above" else 1  # spring 2 pulls the upper link up (above) or down (below)
+    return {"k_1": (upper + sign * k2 * s["a"] * s["l_1"]) / (s["a"] * s["s_1"]), "k_2": k2,
+            "k_3": k2 * s["l_1"] * s["s_2"] / (s["c"] * s["s_3"])}
+
+
+@register_task("7.5", "the three spring rates that balance your own 2R arm, from its energy", "own_rates", "symbolic",
+               "a tuple (k_1, k_2, k_3) of sympy expressions in the symbols of your arrangement "
+               "(task_numbers('7.5')): g, m_1, p_1, l_1, m_2, p_2, a, s_1, s_2, s_3, c, and m_L, l_2 with the "
+               "lamp; any equivalent form accepted; derived by hand: a cell that calls the library's solvers "
+               "is refused", points=2, numbers=_own_numbers)
+def _t75(answer, own):
+    names = {n: span for n, span in LAB7_OWN_SYMBOLS.items() if own["lamp"] or n not in ("m_L", "l_2")}
+    return equivalent_parts(answer, _own_rates(own["arrangement"], own["lamp"]), names, "your rates",
+                            hint="Write the energy of gravity and of the three springs, expand the squared lengths, "
+                                 "and set the coefficients of sin(theta_1), sin(theta_2) and cos(theta_2 - theta_1) "
+                                 "to zero.")
