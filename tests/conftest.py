@@ -188,6 +188,19 @@ def personal_r_c(student_id: str) -> str:
             "link_mass=_n['link_mass']).parameters['r_c']")
 
 
+def personal_lever_energy(student_id: str) -> str:
+    """Code of a right answer to task 2.3 for ``student_id`` (the library's LaCoste lever on their numbers)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"lever_energy = bl.singh.lacoste_lever(**_tn('2.3', {student_id!r})).parameters['PE']")
+
+
+def personal_equivalent(student_id: str) -> str:
+    """Code of a right answer to task 1.3 for ``student_id`` (same mass, same first moment about D)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_c = _tn('1.3', {student_id!r})\n"
+            "m_equivalent = (_c['mass'] * (1 - _c['com'] / 0.5), _c['mass'] * _c['com'] / 0.5)")
+
+
 #: Modules that build the site or read it, or drive Chromium: one xdist worker runs them in this
 #: order (``--dist loadgroup`` in scripts/course.sh) while the other takes everything else.
 SITE_GROUP = ("test_book.py", "test_site_nav.py", "test_lab_browser.py", "test_a11y.py")

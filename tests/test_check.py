@@ -663,11 +663,17 @@ def _board_crank_by_hand(n):
 #: each personal numeric task's right answer from its numbers, by a route independent of its judge
 PERSONAL_RIGHT = {
     "1.1": lambda n: (n["mass"] * n["length"] + n["link_mass"] * n["length"] / 2) / n["counter_mass"],
+    # same mass and same first moment about D (DC = 0.5 m)
+    "1.3": lambda n: (n["mass"] * (1 - n["com"] / 0.5), n["mass"] * n["com"] / 0.5),
     "2.1": lambda n: n["mass"] * bl.G * n["length"] / (n["b"] * n["c"]),
+    # Singh's eq. 3, V = W l / 2 (a_x / b_y + b_y / a_x)
+    "2.3": lambda n: n["weight"] * n["length"] / 2 * (n["a_x"] / n["b_y"] + n["b_y"] / n["a_x"]),
     "3.1": lambda n: _pulley_radius_by_ratio(**n),
     "3.2": lambda n: -n["k"] * n["free_length"] / n["k_partner"],
     "4.1": _parallelogram_by_hand,
     "4.2": _singh_2r_pe,
+    # the sin(theta_2) terms of the energy: k1 a_y1 L2 = g (m2 s_x2 + m3 L2), by hand
+    "4.4": lambda n: bl.G * (n["m2"] * n["sx2"] + n["m3"] * n["L2"]) / (n["L2"] * n["ay1"]),
     "5.1": _lecture_crank_rate,
     "5.2": _singh_fourbar_pe,
     "6.1": _lift_by_hand,
@@ -716,3 +722,30 @@ def test_few_classmates_answers_pass_each_others_check(tid):
     assert rate < 0.01, f"{tid}: {100 * rate:.2f} % of classmate pairs pass each other's check"
     published = enc(_as_answer(PERSONAL_RIGHT[tid](ck.task_numbers(tid, ""))))
     assert not any(core.check_data(tid, published, sid).correct for sid in ids)
+
+
+def test_tolerance_study_uses_the_students_tolerances():
+    """Brief c21b item 1: task 8.2's rate tolerance is personal. The published study (2 % rates) and a
+    classmate's study whose rate tolerance is 25 % away score 0; the student's own study scores."""
+    from balancelab.methods.practice import tolerance
+
+    springs = lab8_reference_springs()
+    built = lab8.built_arm(springs)
+    enc = ck.data.encode_answer
+
+    def study(sid, seed):
+        tol = tolerance.Tolerances(**ck.task_numbers("8.2", sid))
+        return {"springs": springs, "quantile": tolerance.monte_carlo(built, tol, n=3000, grid=15, seed=seed).quantile(0.95)}
+
+    assert ck.task_numbers("8.2", "") == dict(k=0.02, attachment=0.0005, mass=0.01)
+    published = enc(_lab8_study())
+    ids = ("s1", "alice", "bob")
+    rates = {sid: ck.task_numbers("8.2", sid)["k"] for sid in ids}
+    assert all(abs(r / 0.02 - 1) > 0.25 for r in rates.values())
+    for sid in ids:
+        assert core.check_data("8.2", enc(study(sid, 7)), sid).correct, sid
+        assert not core.check_data("8.2", published, sid).correct, sid
+    friends = [(i, j) for i in ids for j in ids if i != j and abs(rates[i] / rates[j] - 1) > 0.25]
+    assert friends
+    for i, j in friends:
+        assert not core.check_data("8.2", enc(study(i, 7)), j).correct, (i, j)

@@ -105,15 +105,30 @@ def _t12(answer):
     return symbolic(answer, (m * r + ml * r / 2) / mc, "m r m_l m_c", "your r_c")
 
 
-@register_task("1.3", "equivalent masses of the coupler at D and C", "m_equivalent", "numeric",
-               "a pair (m_D, m_C) in kg; each accepted within 0.5 %")
-def _t13(answer):
-    # D and C: the coupler's joints with the crank and with the rocker
+def _coupler_numbers(rng) -> dict:
+    """Task 1.3's coupler: ``mass`` (kg) and its centre of mass ``com`` (m from D along DC), published
+    (:data:`LAB1_FOURBAR`'s) or a student's (from ``rng``)."""
     p = LAB1_FOURBAR
-    mass = p["masses"][1]
+    if rng is None:
+        return dict(mass=p["masses"][1], com=p["coms"][1][0])
+    return dict(mass=round(float(rng.uniform(0.8, 2.0)), 3), com=round(float(rng.uniform(0.08, 0.42)), 3))
+
+
+def _equivalent(numbers: dict) -> tuple[float, float]:
+    """Task 1.3's expected ``(m_D, m_C)`` (kg), from the library's equivalent masses."""
+    p, mass = LAB1_FOURBAR, numbers["mass"]
     c = equivalent_masses(crank=p["crank"], coupler=p["coupler"], rocker=p["rocker"], mass=mass,
-                          com=p["coms"][1])["c"].real
-    return numeric_vector(answer, (mass * (1 - c), mass * c), "mass", names=("m_D", "m_C"))
+                          com=(numbers["com"], 0.0))["c"].real
+    return mass * (1 - c), mass * c
+
+
+@register_task("1.3", "equivalent masses of the coupler at D and C", "m_equivalent", "numeric",
+               "a pair (m_D, m_C) in kg for your coupler (task_numbers('1.3'): its mass and its centre of "
+               "mass, m from D along DC); each accepted within 0.5 %", numbers=_coupler_numbers,
+               distinct=(lambda n: _equivalent(n)[1], 0.015))
+def _t13(answer, numbers):
+    # D and C: the coupler's joints with the crank and with the rocker
+    return numeric_vector(answer, _equivalent(numbers), "mass", names=("m_D", "m_C"))
 
 
 def _counterweight(answer: dict, key: str) -> tuple[float, tuple[float, float]]:

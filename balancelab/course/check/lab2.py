@@ -90,12 +90,25 @@ def _t22(answer):
     return ok1 and ok2, f"{m1} {m2}", h1 or h2
 
 
+def _lacoste_numbers(rng) -> dict:
+    """Task 2.3's LaCoste lever (N, m): :data:`LACOSTE`, or a student's (from ``rng``)."""
+    if rng is None:
+        return dict(LACOSTE)
+    u = lambda lo, hi, nd=3: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    return dict(weight=u(10.0, 40.0, 1), length=u(0.3, 0.7), a_x=u(0.05, 0.2), b_y=u(0.15, 0.35))
+
+
+def _lacoste_energy(lever: dict) -> float:
+    """Task 2.3's expected value: the balanced lever's energy, from the library's design."""
+    return float(lacoste_lever(**lever).potential_energy(np.zeros(1)).total)
+
+
 @register_task("2.3", "constant potential energy of the balanced LaCoste lever", "lever_energy", "numeric",
-               "a number in J (energies measured from the pivot height, spring at zero length); "
-               "accepted within 0.5 %")
-def _t23(answer):
-    energy = lacoste_lever(**LACOSTE).potential_energy(np.zeros(1)).total
-    return numeric(answer, float(energy), "energy")
+               "a number in J for your lever (task_numbers('2.3'); energies measured from the pivot height, "
+               "spring at zero length); accepted within 0.5 %", numbers=_lacoste_numbers,
+               distinct=(_lacoste_energy, 0.015))
+def _t23(answer, lever):
+    return numeric(answer, _lacoste_energy(lever), "energy")
 
 
 def _lever_numbers(rng) -> dict:

@@ -8,7 +8,8 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import Attachment, Load, Spring
 from ...methods.lecture import serial_2r_parallelogram
-from ...methods.lustig import lustig_values
+from ...methods.lustig import LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, lustig_values
+from ...methods.lustig import solve as lustig_solve
 from ...methods.singh import serial_2r_min_preload
 from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, vector
 from .core import AnswerError, register_task
@@ -163,10 +164,31 @@ def _t43(answer):
     return design_balanced(d, cons)
 
 
+#: The inputs of task 4.4 a student's numbers replace (the rest are Table 3e case 1's).
+_LUSTIG_PERSONAL = ("m2", "m3", "sx2", "ay1", "k2")
+
+
+def _lustig_numbers(rng) -> dict:
+    """Task 4.4's inputs (kg, m, N/m): case 1 of Table 3e (:func:`lustig_values` unsolved), or a student's
+    masses, centre of mass ``sx2``, anchor height ``ay1`` and rate ``k2`` (from ``rng``)."""
+    v = {k: float(x) for k, x in lustig_values(1, solved=False).items()}
+    if rng is None:
+        return v
+    u = lambda lo, hi, nd=3: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    v.update(m2=u(1.2, 3.0, 2), m3=u(1.2, 3.0, 2), sx2=u(0.06, 0.2), ay1=u(0.06, 0.16), k2=u(300.0, 900.0, 0))
+    return v
+
+
+def _lustig_k1(values: dict) -> float:
+    """Task 4.4's expected ``k1`` (N/m): the paper's conditions solved for its six unknowns."""
+    return float(lustig_solve(2, LUSTIG_TOPOLOGY, values, LUSTIG_UNKNOWNS)["k1"])
+
+
 @register_task("4.4", "spring rate k1 of Lustig et al.'s case 1 by the stiffness-matrix method", "k1_lustig",
-               "numeric", "a number in N/m; accepted within 0.5 %")
-def _t44(answer):
-    return numeric(answer, lustig_values(1)["k1"], "stiffness")
+               "numeric", "a number in N/m for your inputs (task_numbers('4.4')); accepted within 0.5 %",
+               numbers=_lustig_numbers, distinct=(_lustig_k1, 0.015))
+def _t44(answer, values):
+    return numeric(answer, _lustig_k1(values), "stiffness")
 
 
 @register_task("4.5", "formula for the least preload energy PE_min of Singh's 2R", "pe_min_formula", "symbolic",

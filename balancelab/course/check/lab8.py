@@ -8,8 +8,8 @@ generalized force (and, for task 8.2, a Monte Carlo of built arms) is evaluated.
 values are never revealed.
 
 * 8.1 (design, open): real extension springs, over pulleys, within :data:`LAB8_BUDGET`;
-* 8.2 (design): the 95 % quantile of a tolerance study of *those* springs, under
-  :data:`LAB8_QUANTILE_LIMIT`;
+* 8.2 (compute): the 95 % quantile of a tolerance study of *those* springs with the student's
+  tolerances (``task_numbers("8.2")``), under :data:`LAB8_QUANTILE_LIMIT`;
 * 8.3 (derive): the shoulder's residual torque when spring 1 is 2 % stiffer than ideal.
 """
 from __future__ import annotations
@@ -208,20 +208,34 @@ def _t81(answer):
                   "within the allowable stresses of its body and hooks."), ""
 
 
+def _tolerance_numbers(rng) -> dict:
+    """Task 8.2's tolerances (standard deviations): rate ``k`` and ``mass`` (fractions), ``attachment`` (m);
+    :data:`LAB8_TOLERANCES`, or with a student's rate tolerance (from ``rng``): the rate's dominates the
+    quantile, so a rate tolerance 25 % from the published one moves the quantile past the 10 % accepted."""
+    published = dict(k=LAB8_TOLERANCES.k, attachment=LAB8_TOLERANCES.attachment, mass=LAB8_TOLERANCES.mass)
+    if rng is None:
+        return published
+    return dict(published, k=round(float(rng.uniform(0.01, 0.03)), 4))
+
+
 @register_task("8.2", "95 % quantile of the worst residual of built arms with your springs", "tolerance_study",
                "design", "a dict {'springs': your springs of task 8.1, 'quantile': N m}: the 95 % quantile of "
-               "the worst residual over a Monte Carlo of built arms with the lab's tolerances; accepted within "
-               "10 % of the grader's Monte Carlo, and it must be at most 0.5 N m", skill="compute")
-def _t82(answer, n: int = 4000):
+               "the worst residual over a Monte Carlo of built arms with your tolerances (task_numbers('8.2'): "
+               "standard deviations k and mass as fractions, attachment in m); accepted within 10 % of the "
+               "grader's Monte Carlo, and it must be at most 0.5 N m", skill="compute",
+               numbers=_tolerance_numbers, distinct=(lambda tol: tol["k"], 0.25))
+def _t82(answer, numbers, n: int = 4000):
     a = as_mapping(answer, ("springs", "quantile"), "your study")
     value = quantity(a["quantile"], "torque", "the quantile")
     design = built_arm(a["springs"])
     if value <= 0:
         raise AnswerError("The quantile must be a positive number of N m.", "Use result.quantile(0.95).")
-    reference = monte_carlo(design, LAB8_TOLERANCES, n, grid=15, seed=0).quantile(0.95)
+    tolerances = Tolerances(k=numbers["k"], attachment=numbers["attachment"], mass=numbers["mass"])
+    reference = monte_carlo(design, tolerances, n, grid=15, seed=0).quantile(0.95)
     if abs(value / reference - 1) > 0.10:
-        return (False, "Your quantile is not within 10 % of a Monte Carlo of your springs.",
-                "Use the lab's tolerances, enough built arms (>= 2000) and a grid over both angles.")
+        return (False, "Your quantile is not within 10 % of a Monte Carlo of your springs with your tolerances.",
+                "Use your tolerances (task_numbers('8.2')), enough built arms (>= 2000) and a grid over both "
+                "angles.")
     if reference > LAB8_QUANTILE_LIMIT:
         return (False, f"Right number, but 95 % of built arms exceed {LAB8_QUANTILE_LIMIT:g} N m.",
                 "Which tolerance dominates? Springs with rates closer to ideal do not help against it.")
