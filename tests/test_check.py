@@ -749,3 +749,44 @@ def test_tolerance_study_uses_the_students_tolerances():
     assert friends
     for i, j in friends:
         assert not core.check_data("8.2", enc(study(i, 7)), j).correct, (i, j)
+
+
+def test_rate_error_verdicts_say_derivative_and_sign():
+    """Brief c21b item 3: task 8.4's verdicts. The hint of a wrong formula is the way to a derivative
+    (not a balance condition set to zero), the symbol keeps its case, a flipped sign is named; and the
+    hint's claims hold: dV/dtheta_1 itself (the library's generalized force) at link 1's angle from the
+    horizontal, for any theta_2."""
+    from balancelab.methods.practice.forces import generalized_force
+
+    flipped = check("8.4", sp.sympify("epsilon*g*cos(theta_1)*(m_1*p_1 + m_2*l_1)"))
+    assert not flipped.correct and "opposite sign" in flipped.hint
+    assert flipped.message == "Your dV/dtheta_1 is not equivalent to the expected one."
+    wrong = check("8.4", sp.sympify("-epsilon*g*sin(theta_1)*(m_1*p_1 + m_2*l_1)"))
+    assert not wrong.correct and "coefficient to zero" not in wrong.hint
+    assert "differentiate" in wrong.hint and "from the horizontal" in wrong.hint and "not minus it" in wrong.hint
+    right = check("8.4", RIGHT["8.4"]())
+    assert right.correct and right.message == "Your dV/dtheta_1 is equivalent to the expected one."
+    eps = 0.03
+    for q in ((0.3, 0.0), (0.3, 1.0), (-0.9, -0.6)):
+        _, Q = generalized_force(lab8.rate_error_arm(eps), np.array([q]))
+        by_formula = float(RIGHT["8.4"]().subs({"epsilon": eps, "g": bl.G, "m_1": 1.0, "p_1": 0.25, "m_2": 1.0,
+                                                 "l_1": 0.5, "theta_1": q[0]}))
+        assert Q[0, 0] == pytest.approx(by_formula, rel=1e-6)
+
+
+def test_pe_min_verdicts_say_largest_energy():
+    """Brief c21b item 3: task 4.5's hint is the way to the largest load energy (no coefficient is set to
+    zero), the symbol keeps its case; and the claim holds: the formula is the largest energy of the loads
+    over a grid of poses (theta_2 measured from link 1), for Singh's published 2R."""
+    wrong = check("4.5", sp.sympify("W_1*p_x1 + W_2*l + W_2*p_x2"))
+    assert not wrong.correct and "coefficient to zero" not in wrong.hint
+    assert "largest value" in wrong.hint and "amplitude" in wrong.hint
+    assert wrong.message == "Your PE_min is not equivalent to the expected one."
+    flipped = check("4.5", -RIGHT["4.5"]())
+    assert not flipped.correct and "opposite sign" in flipped.hint
+    t1, t2 = np.meshgrid(np.linspace(-np.pi, np.pi, 721), np.linspace(-np.pi, np.pi, 721))
+    W1, W2, (px1, py1), px2, l = 10.0, 20.0, (1.0, 0.5), 2.0, 1.5
+    energy = W1 * (px1 * np.sin(t1) + py1 * np.cos(t1)) + W2 * (l * np.sin(t1) + px2 * np.sin(t1 + t2))
+    formula = float(RIGHT["4.5"]().subs({"W_1": W1, "W_2": W2, "p_x1": px1, "p_y1": py1, "p_x2": px2, "l": l}))
+    assert energy.max() == pytest.approx(formula, rel=1e-4)
+    assert formula == pytest.approx(lab4.lab4_singh_arm().parameters["PE_min"], rel=1e-9)

@@ -191,6 +191,14 @@ def _t44(answer, values):
     return numeric(answer, _lustig_k1(values), "stiffness")
 
 
+#: Task 4.5's hint: PE_min is no balance condition (no coefficient is set to zero) but the largest
+#: value of the loads' energy over every pose.
+PE_MIN_HINT = ("PE_min is the largest value the loads' energy takes over all poses. Write that energy with "
+               "link 2's angle measured from link 1; link 1's terms in sin(theta_1) and cos(theta_1) make one "
+               "sinusoid (its largest value is its amplitude), and theta_2 is free, so link 2's largest value "
+               "adds to it.")
+
+
 @register_task("4.5", "formula for the least preload energy PE_min of Singh's 2R", "pe_min_formula", "symbolic",
                "a sympy expression in W_1, W_2, p_x1, p_y1, p_x2, l (p_y2 = 0; any equivalent form accepted); "
                "derived by hand: a cell that calls the library's solvers is refused")
@@ -199,4 +207,4 @@ def _t45(answer):
 
     W1, W2, px1, py1, px2, l = sp.symbols("W_1 W_2 p_x1 p_y1 p_x2 l", positive=True)
     expected = sp.sqrt((W1 * px1 + W2 * l) ** 2 + (W1 * py1) ** 2) + W2 * px2
-    return symbolic(answer, expected, "W_1 W_2 p_x1 p_y1 p_x2 l", "your PE_min")
+    return symbolic(answer, expected, "W_1 W_2 p_x1 p_y1 p_x2 l", "your PE_min", hint=PE_MIN_HINT)

@@ -264,6 +264,14 @@ def _t83(answer, numbers):
     return numeric(answer, _shoulder_torque(numbers), "torque")
 
 
+#: Task 8.4's hint: the residual is a derivative, not a condition set to zero; theta_1 is link 1's
+#: angle from the horizontal and only the extra rate of spring 1 is unbalanced.
+RATE_ERROR_HINT = ("Only the extra rate epsilon k1 is unbalanced: write its spring's energy as a function of "
+                   "theta_1 (link 1's angle from the horizontal; the anchor b1 above the shoulder, the end c1 "
+                   "along link 1), differentiate it (dV/dtheta_1 itself, not minus it), then remove b1 and c1 "
+                   "with the ideal rate's balance condition for link 1.")
+
+
 @register_task("8.4", "formula for the shoulder torque dV/dtheta_1 left by a rate error eps of spring 1",
                "torque_formula", "symbolic",
                "a sympy expression in epsilon, g, m_1, p_1, m_2, l_1, theta_1: the derivative of the arm's "
@@ -275,4 +283,5 @@ def _t84(answer):
     eps, g, m1, p1, m2, l1 = sp.symbols("epsilon g m_1 p_1 m_2 l_1", positive=True)
     th = sp.Symbol("theta_1", real=True)
     expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th)
-    return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1")
+    return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1",
+                    hint=RATE_ERROR_HINT)
