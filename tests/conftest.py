@@ -172,12 +172,13 @@ def personal_k_lamp(student_id: str) -> str:
 
 
 def personal_lever_spring(student_id: str) -> str:
-    """Code of a right design for task 2.4 (the student's own load), tilted anchor of the generalized lever."""
+    """Code of a right design for task 2.4 (the student's own load, stock rate and mounting box): the anchor
+    at the box's centre, ``a_x`` from the rate condition k = W l b_y / (a_x |b|^2), ``a_y`` from eq. 15."""
     return ("from balancelab.course.check import task_numbers as _tn\n"
             f"_w = _tn('2.4', {student_id!r})\n"
-            "_p = bl.singh.generalized_lever(weight=_w['weight'], length=_w['length'], a_x=0.3, b_x=-0.05, "
-            "b_y=0.25).parameters\n"
-            "lever_spring = {'k': _p['k'], 'a': (_p['a_x'], _p['a_y']), 'b': (_p['b_x'], _p['b_y'])}")
+            "_bx, _by = (_w['box'][0] + _w['box'][1]) / 2, (_w['box'][2] + _w['box'][3]) / 2\n"
+            "_ax = _w['weight'] * _w['length'] * _by / (_w['k'] * (_bx ** 2 + _by ** 2))\n"
+            "lever_spring = {'k': _w['k'], 'a': (_ax, -_ax * _bx / _by), 'b': (_bx, _by)}")
 
 
 def personal_r_c(student_id: str) -> str:

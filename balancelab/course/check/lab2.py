@@ -11,7 +11,7 @@ from ...methods.singh import lacoste_lever
 from .answers import design_balanced, numeric, spring, symbolic
 from .core import AnswerError, register_task
 
-__all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "lab2_lever"]
+__all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "LAB2_BOX", "LAB2_STOCK_RATE", "lab2_lever"]
 
 #: Task 2.1's lamp arm (kg, m): the lecture's single link with a ZFL spring.
 LAMP_SPRING = dict(mass=1.5, length=0.4, b=0.25, c=0.12)
@@ -111,24 +111,42 @@ def _t23(answer, lever):
     return numeric(answer, _lacoste_energy(lever), "energy")
 
 
+#: The mounting box of the published task 2.4 (m): ``(x_min, x_max, y_min, y_max)`` of the anchor ``b``, and
+#: the rate (N/m) of the stock spring that must be used.
+LAB2_BOX = (-0.10, -0.05, 0.20, 0.25)
+LAB2_STOCK_RATE = 300.0
+
+
 def _lever_numbers(rng) -> dict:
-    """Task 2.4's load: ``weight`` (N) at ``length`` (m) of :data:`LAB2_LEVER`, or a student's (from ``rng``)."""
+    """Task 2.4's load (``weight`` N at ``length`` m), the stock spring's rate ``k`` (N/m) and the anchor's
+    mounting ``box`` (m): :data:`LAB2_LEVER`'s, or a student's (from ``rng``). A student's rate is that of
+    a design with the anchor at the box's centre and ``a_x`` between 0.2 and 0.4 m (not near a round 0.3 m),
+    rounded to 5 N/m, so a design within the limits exists, and a catalog lever called with a chosen ``a_x``
+    misses the rate."""
     if rng is None:
-        return dict(weight=LAB2_LEVER["weight"], length=LAB2_LEVER["length"])
-    return dict(weight=round(float(rng.uniform(20.0, 40.0)), 1), length=round(float(rng.uniform(0.45, 0.7)), 2))
+        return dict(weight=LAB2_LEVER["weight"], length=LAB2_LEVER["length"], k=LAB2_STOCK_RATE, box=LAB2_BOX)
+    weight, length = round(float(rng.uniform(20.0, 40.0)), 1), round(float(rng.uniform(0.45, 0.7)), 2)
+    x0, y0 = round(float(rng.uniform(-0.15, 0.1)), 3), round(float(rng.uniform(0.15, 0.25)), 3)
+    bx, by = x0 + 0.025, y0 + 0.025
+    a_x = float(rng.uniform(0.2, 0.28) if rng.random() < 0.5 else rng.uniform(0.32, 0.4))  # not a round 0.3
+    k = min(5.0 * round(weight * length * by / (a_x * (bx ** 2 + by ** 2)) / 5.0), LAB2_LEVER["k_max"])
+    return dict(weight=weight, length=length, k=k, box=(x0, round(x0 + 0.05, 3), y0, round(y0 + 0.05, 3)))
 
 
-@register_task("2.4", "a ZFL spring that balances the lever within the limits (open design)", "lever_spring",
-               "design", "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; "
-               "k <= 400 N/m, |b| <= 0.35 m, |a| <= 0.6 m; balanced to 0.1 % with your load "
-               "(task_numbers('2.4'))", points=2, numbers=_lever_numbers,
-               distinct=(lambda load: load["weight"] * load["length"], 0.01))
+@register_task("2.4", "a ZFL spring of your stock rate, anchored in your mounting box, that balances the lever "
+               "(open design)", "lever_spring", "design",
+               "a dict {'k': N/m, 'a': (x, y) on the lever, 'b': (x, y) on the ground} in SI units; k your stock "
+               "spring's rate (task_numbers('2.4')['k'], within 0.5 %), b inside your mounting box "
+               "(task_numbers('2.4')['box'] = (x_min, x_max, y_min, y_max)), |a| <= 0.6 m; balanced to 0.1 % "
+               "with your load (task_numbers('2.4'))", points=2, numbers=_lever_numbers,
+               distinct=(lambda load: load["weight"] * load["length"] / load["k"], 0.01))
 def _t24(answer, load):
     k, pa, pb = spring(answer)
     p = LAB2_LEVER
-    cons = [(k <= p["k_max"] * (1 + 1e-12), f"k above {p['k_max']:g} N/m"),
-            (np.hypot(*pb) <= p["anchor_max"] + 1e-12,
-             f"anchor b farther than {p['anchor_max']} m from the pivot"),
+    x0, x1, y0, y1 = load["box"]
+    cons = [(abs(k / load["k"] - 1) <= 5e-3, f"k is not your stock spring's rate ({load['k']:g} N/m)"),
+            (x0 - 1e-12 <= pb[0] <= x1 + 1e-12 and y0 - 1e-12 <= pb[1] <= y1 + 1e-12,
+             "anchor b outside your mounting box"),
             (np.hypot(*pa) <= p["attach_max"] + 1e-12,
              f"attachment a farther than {p['attach_max']} m from the pivot")]
     return design_balanced(lab2_lever(k, tuple(pa), tuple(pb), W=load["weight"], l=load["length"]), cons)
