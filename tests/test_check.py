@@ -791,7 +791,7 @@ def test_rate_error_verdicts_say_derivative_and_sign():
     assert flipped.message == "Your dV/dtheta_1 is not equivalent to the expected one."
     wrong = check("8.4", sp.sympify("-epsilon*g*sin(theta_1)*(m_1*p_1 + m_2*l_1)"))
     assert not wrong.correct and "coefficient to zero" not in wrong.hint
-    assert "differentiate" in wrong.hint and "from the horizontal" in wrong.hint and "not minus it" in wrong.hint
+    assert "differentiate" in wrong.hint and "reference line" in wrong.hint and "not minus it" in wrong.hint
     right = check("8.4", RIGHT["8.4"]())
     assert right.correct and right.message == "Your dV/dtheta_1 is equivalent to the expected one."
     eps = 0.03
@@ -818,3 +818,52 @@ def test_pe_min_verdicts_say_largest_energy():
     formula = float(RIGHT["4.5"]().subs({"W_1": W1, "W_2": W2, "p_x1": px1, "p_y1": py1, "p_x2": px2, "l": l}))
     assert energy.max() == pytest.approx(formula, rel=1e-4)
     assert formula == pytest.approx(lab4.lab4_singh_arm().parameters["PE_min"], rel=1e-9)
+
+
+def _variant_formula(tid: str, n: dict):
+    """Each derive task's right formula for a student's variant, by hand (not through the judge)."""
+    if tid == "1.2":  # the arm's own centre of mass at f r
+        return sp.sympify(f"(m*r + ({n['f']})*m_l*r)/m_c")
+    if tid == "2.2":  # the load's moment W f l
+        return (sp.sympify("-a_x*b_x/b_y"), sp.sympify(f"W*({n['f']})*l*b_y/(a_x*(b_x**2 + b_y**2))"))
+    if tid == "4.5":  # the elbow carries (1 + c) W_2
+        return sp.sympify(f"sqrt((W_1*p_x1 + (1 + ({n['c']}))*W_2*l)**2 + (W_1*p_y1)**2) + W_2*p_x2")
+    if tid == "8.4":  # link 1 at theta_1 + alpha from the horizontal
+        return sp.sympify(f"-epsilon*g*(m_1*p_1 + m_2*l_1)*cos(theta_1 + ({n['alpha']}))")
+    return sp.sympify(f"-m*g*r*cos(theta + ({n['alpha']}))/sqrt(2*k*C - 2*k*m*g*r*sin(theta + ({n['alpha']})))")
+
+
+@pytest.mark.parametrize("tid", ["1.2", "2.2", "4.5", "8.4", "9.3"])
+def test_derive_tasks_have_personal_variants_the_book_formula_fails(tid):
+    """Brief c21b item 4: the name scan cannot be complete (``getattr(bl, "bal" + "ance")``), so the
+    answer's form carries the defence: each student derives a personal variant, and the book's (or a
+    docstring's) formula is wrong for them. Judged by equivalence at random instances."""
+    enc = ck.data.encode_answer
+    book = _variant_formula(tid, ck.task_numbers(tid, ""))
+    assert core.check_data(tid, enc(book), "").correct
+    assert core.check_data(tid, enc(RIGHT[tid]()), "").correct  # the published problem is the book's
+    ids = [f"s{i:03d}" for i in range(40)]
+    assert all(ck.task_numbers(tid, sid) != ck.task_numbers(tid, "") for sid in ids)
+    assert len({tuple(ck.task_numbers(tid, sid).values()) for sid in ids}) >= 4
+    for sid in ids[:6]:
+        mine = _variant_formula(tid, ck.task_numbers(tid, sid))
+        assert core.check_data(tid, enc(mine), sid).correct, sid
+        assert not core.check_data(tid, enc(book), sid).correct, sid
+
+
+def test_getattr_beats_the_name_scan_but_not_the_variant():
+    """The lever's balance conditions reached through ``getattr`` pass the name scan (nothing named) and
+    give the book's formula: right for the published lever, wrong for a student's variant."""
+    from balancelab.course.check.derive import shortcuts
+
+    source = ('d = getattr(bl.singh, "generalized_" + "lever")(weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)\n'
+              'eqs = [e.lhs for e in getattr(d, "balance_" + "conditions")()]')
+    assert shortcuts("2.2", source) == []  # the scan does not see it
+    d = getattr(bl.singh, "generalized_" + "lever")(weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)
+    eqs = [e.lhs for e in getattr(d, "balance_" + "conditions")()]
+    syms = {str(x): x for e in eqs for x in e.free_symbols}
+    sol = [x for x in sp.solve(eqs, [syms["a_y"], syms["k"]], dict=True) if x[syms["k"]] != 0][0]
+    answer = ck.data.encode_answer((sol[syms["a_y"]], sol[syms["k"]]))
+    assert core.check_data("2.2", answer, "").correct
+    student = next(sid for sid in (f"s{i}" for i in range(50)) if ck.task_numbers("2.2", sid)["f"] != "1")
+    assert not core.check_data("2.2", answer, student).correct

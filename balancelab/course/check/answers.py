@@ -18,7 +18,7 @@ from ...core.design import Design, UnreachableConfiguration
 from ...core.elements import G
 from .core import AnswerError
 
-__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "BALANCE_HINT", "as_mapping",
+__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "BALANCE_HINT", "variant", "as_mapping",
            "DESIGN_TOLERANCE", "design_balanced"]
 
 _UNITS = {
@@ -434,6 +434,41 @@ def _equivalent(expr, expected, allowed: dict, sign: set, exact: bool = True) ->
         if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
             return False
     return True
+
+
+def variant(rng, published: str, options: tuple[str, ...]) -> str:
+    """A derive task's personal variant: ``published`` for the published numbers, else one of ``options``.
+
+    A derive task whose formula stands in the book or a docstring gets a personal variant of its
+    problem (a centre of mass elsewhere, an extra weight, an angle from another line), so that the
+    printed formula, read by a student or found with ``getattr``, is wrong for them; the judge
+    compares the answer by equivalence with the variant's own formula.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator or None
+        The student's generator (:func:`~.core.student_rng`), or ``None`` for the published problem.
+    published : str
+        The published value, as SymPy text (e.g. ``"1/2"``).
+    options : tuple of str
+        The personal values (none equal to ``published``).
+
+    Returns
+    -------
+    str
+        SymPy text, e.g. ``"2/5"`` or ``"pi/6"``.
+
+    Examples
+    --------
+    >>> variant(None, "1/2", ("1/3", "2/3"))
+    '1/2'
+    >>> import numpy as np
+    >>> variant(np.random.default_rng(0), "1/2", ("1/3", "2/3")) in ("1/3", "2/3")
+    True
+    """
+    if published in options:
+        raise ValueError(f"options must not hold the published value {published!r}")
+    return published if rng is None else options[int(rng.integers(len(options)))]
 
 
 def as_mapping(answer, keys, what: str = "the design") -> dict:

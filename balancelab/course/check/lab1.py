@@ -15,7 +15,7 @@ from ...core.design import Design
 from ...core.elements import gravity_load
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints, fourbar_labels
 from ...methods.lecture import equivalent_masses, single_link_counterweight
-from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic
+from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_ARM", "LAB1_FOURBAR", "lab1_fourbar"]
@@ -96,13 +96,23 @@ def _r_c(lamp: dict) -> float:
                                      link_mass=lamp["link_mass"]).parameters["r_c"]
 
 
+def _arm_numbers(rng) -> dict:
+    """Task 1.2's variant: the arm's own centre of mass at the fraction ``f`` of ``r`` from the pivot
+    (SymPy text); ``"1/2"`` (a uniform arm, the book's) for the published problem."""
+    return dict(f=variant(rng, "1/2", ("1/3", "2/5", "3/5", "2/3", "3/4")))
+
+
 @register_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",
-               "a sympy expression in m, r, m_l, m_c (any equivalent form is accepted)")
-def _t12(answer):
+               "a sympy expression in m, r, m_l, m_c for your arm (task_numbers('1.2'): its own centre of mass "
+               "at the fraction f of r from the pivot); any equivalent form is accepted", numbers=_arm_numbers)
+def _t12(answer, arm):
     import sympy as sp
 
     m, r, ml, mc = sp.symbols("m r m_l m_c", positive=True)
-    return symbolic(answer, (m * r + ml * r / 2) / mc, "m r m_l m_c", "your r_c")
+    f = sp.Rational(arm["f"])
+    return symbolic(answer, (m * r + f * ml * r) / mc, "m r m_l m_c", "your r_c",
+                    hint="Write the arm's potential energy with its own centre of mass at f r, and make the "
+                         "coefficient of sin(theta) vanish.")
 
 
 def _coupler_numbers(rng) -> dict:

@@ -8,7 +8,7 @@ from ...core.elements import Load, Spring
 from ...mechanisms.lever import lever_design
 from ...methods.lecture import single_link_spring
 from ...methods.singh import lacoste_lever
-from .answers import design_balanced, numeric, spring, symbolic
+from .answers import design_balanced, numeric, spring, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "LAB2_BOX", "LAB2_STOCK_RATE", "lab2_lever"]
@@ -71,9 +71,16 @@ def _t21(answer, lamp):
     return numeric(answer, single_link_spring(**lamp).parameters["k"], "stiffness")
 
 
+def _lever_variant(rng) -> dict:
+    """Task 2.2's variant: the load at the fraction ``f`` of ``l`` from the pivot (SymPy text); ``"1"``
+    (the load at ``l``, the book's lever) for the published problem."""
+    return dict(f=variant(rng, "1", ("1/2", "2/3", "3/4", "4/5", "5/4", "4/3")))
+
+
 @register_task("2.2", "balance conditions of the generalized lever: (a_y, k)", "lever_conditions", "symbolic",
-               "a pair (a_y, k) of sympy expressions in W, l, a_x, b_x, b_y; any equivalent form accepted")
-def _t22(answer):
+               "a pair (a_y, k) of sympy expressions in W, l, a_x, b_x, b_y for your lever (task_numbers('2.2'): "
+               "the load at f l from the pivot); any equivalent form accepted", numbers=_lever_variant)
+def _t22(answer, lever):
     import sympy as sp
 
     if isinstance(answer, dict):
@@ -84,9 +91,9 @@ def _t22(answer):
     # b_x may have either sign (the anchor on either side of the pivot): it is a real symbol
     W, l, ax, by = sp.symbols("W l a_x b_y", positive=True)
     bx = sp.Symbol("b_x", real=True)
-    names = "W l a_x b_x b_y"
+    names, f = "W l a_x b_x b_y", sp.Rational(lever["f"])
     ok1, m1, h1 = symbolic(answer[0], -ax * bx / by, names, "your a_y", signed="b_x")
-    ok2, m2, h2 = symbolic(answer[1], W * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k", signed="b_x")
+    ok2, m2, h2 = symbolic(answer[1], W * f * l * by / (ax * (bx ** 2 + by ** 2)), names, "your k", signed="b_x")
     return ok1 and ok2, f"{m1} {m2}", h1 or h2
 
 

@@ -25,7 +25,7 @@ from ...methods.practice.forces import generalized_force
 from ...methods.practice.selection import spring_strokes
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.practice.tolerance import Tolerances, monte_carlo
-from .answers import as_mapping, numeric, quantity, symbolic
+from .answers import as_mapping, numeric, quantity, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB8_RATE_ERROR", "lab8_arm",
@@ -265,23 +265,30 @@ def _t83(answer, numbers):
 
 
 #: Task 8.4's hint: the residual is a derivative, not a condition set to zero; theta_1 is link 1's
-#: angle from the horizontal and only the extra rate of spring 1 is unbalanced.
+#: angle from the student's reference line and only the extra rate of spring 1 is unbalanced.
 RATE_ERROR_HINT = ("Only the extra rate epsilon k1 is unbalanced: write its spring's energy as a function of "
-                   "theta_1 (link 1's angle from the horizontal; the anchor b1 above the shoulder, the end c1 "
+                   "your theta_1 (link 1's angle from your reference line; the anchor b1 above the shoulder, the end c1 "
                    "along link 1), differentiate it (dV/dtheta_1 itself, not minus it), then remove b1 and c1 "
                    "with the ideal rate's balance condition for link 1.")
+
+
+def _angle_numbers(rng) -> dict:
+    """Task 8.4's variant: the student's ``theta_1`` is measured from a line at ``alpha`` (SymPy text, rad)
+    above the horizontal; ``"0"`` (from the horizontal, the book's) for the published problem."""
+    return dict(alpha=variant(rng, "0", ("pi/12", "pi/6", "pi/4", "pi/3", "pi/2", "-pi/6", "-pi/4")))
 
 
 @register_task("8.4", "formula for the shoulder torque dV/dtheta_1 left by a rate error eps of spring 1",
                "torque_formula", "symbolic",
                "a sympy expression in epsilon, g, m_1, p_1, m_2, l_1, theta_1: the derivative of the arm's "
-               "potential energy with respect to theta_1, sign included (any equivalent form accepted); "
-               "derived by hand: a cell that calls the library's solvers is refused")
-def _t84(answer):
+               "potential energy with respect to your theta_1 (task_numbers('8.4'): measured from a line at alpha "
+               "above the horizontal), sign included (any equivalent form accepted); "
+               "derived by hand: a cell that calls the library's solvers is refused", numbers=_angle_numbers)
+def _t84(answer, angle):
     import sympy as sp
 
     eps, g, m1, p1, m2, l1 = sp.symbols("epsilon g m_1 p_1 m_2 l_1", positive=True)
     th = sp.Symbol("theta_1", real=True)
-    expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th)
+    expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th + sp.sympify(angle["alpha"]))
     return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1",
                     hint=RATE_ERROR_HINT)
