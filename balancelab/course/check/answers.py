@@ -436,7 +436,7 @@ def _equivalent(expr, expected, allowed: dict, sign: set, exact: bool = True) ->
     return True
 
 
-def variant(rng, published: str, options: tuple[str, ...]) -> str:
+def variant(rng: np.random.Generator | None, published: str, options: tuple[str, ...]) -> str:
     """A derive task's personal variant: ``published`` for the published numbers, else one of ``options``.
 
     A derive task whose formula stands in the book or a docstring gets a personal variant of its

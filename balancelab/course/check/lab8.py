@@ -119,7 +119,7 @@ def built_arm(springs) -> Design:
     >>> arm = built_arm({"k1": {"d": 2e-3, "D": 20e-3, "Na": 20, "F_i": 4.0},
     ...                  "k2": {"d": 1e-3, "D": 10e-3, "Na": 30, "F_i": 2.5}})
     >>> [round(s.k, 1) for s in arm.springs]
-    [1021.2, 340.4]
+    [1021.3, 340.4]
     """
     real = real_springs(springs)
     ideal = lab8_arm()
