@@ -89,13 +89,15 @@ PROBLEMS = (
                          p1=_r(rng, 0.15, 0.3), l1=_r(rng, 0.4, 0.6), th=_r(rng, -60.0, 60.0, 1)),
         lambda n: (f"A 2R lamp arm (m1 = {n['m1']} kg at p1 = {n['p1']} m on link 1, m2 = {n['m2']} kg whose "
                    f"first moment acts at the elbow, l1 = {n['l1']} m) is balanced by a zero-free-length spring "
-                   f"on link 1 from an anchor above the shoulder. The spring is {100 * n['e']:.2f} % too stiff. "
-                   f"Derive the residual shoulder torque (N m) as a function of theta1 and give its size at "
-                   f"theta1 = {n['th']} deg."),
+                   f"on link 1 from an anchor above the shoulder; theta1 is link 1's angle from the horizontal, "
+                   f"counter-clockwise. The spring is {100 * n['e']:.2f} % too stiff. Derive the torque (N m) a hand "
+                   "must apply to link 1 to hold the arm, dV/dtheta1 (counter-clockwise positive), as a function "
+                   f"of theta1, and evaluate it, with its sign, at theta1 = {n['th']} deg."),
         lambda n: ("Only the extra rate e k1 is unbalanced: its energy e k1 (b1^2 + c1^2 - 2 b1 c1 sin(theta1)) / 2 "
-                   "has derivative -e k1 b1 c1 cos(theta1), and k1 b1 c1 = g (m1 p1 + m2 l1), so the torque is "
-                   "e g (m1 p1 + m2 l1) cos(theta1), whatever the spring's mounting."),
-        lambda n: n["e"] * G * (n["m1"] * n["p1"] + n["m2"] * n["l1"]) * math.cos(math.radians(n["th"]))),
+                   "has derivative -e k1 b1 c1 cos(theta1), and k1 b1 c1 = g (m1 p1 + m2 l1), so the hand's torque "
+                   "is dV/dtheta1 = -e g (m1 p1 + m2 l1) cos(theta1), whatever the spring's mounting: negative "
+                   "(clockwise) over the whole range, since the stiff spring lifts the arm and the hand holds it down."),
+        lambda n: -n["e"] * G * (n["m1"] * n["p1"] + n["m2"] * n["l1"]) * math.cos(math.radians(n["th"]))),
 )
 
 

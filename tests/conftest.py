@@ -172,12 +172,13 @@ def personal_k_lamp(student_id: str) -> str:
 
 
 def personal_lever_spring(student_id: str) -> str:
-    """Code of a right design for task 2.4 (the student's own load), tilted anchor of the generalized lever."""
+    """Code of a right design for task 2.4 (the student's own load, stock rate and mounting box): the anchor
+    at the box's centre, ``a_x`` from the rate condition k = W l b_y / (a_x |b|^2), ``a_y`` from eq. 15."""
     return ("from balancelab.course.check import task_numbers as _tn\n"
             f"_w = _tn('2.4', {student_id!r})\n"
-            "_p = bl.singh.generalized_lever(weight=_w['weight'], length=_w['length'], a_x=0.3, b_x=-0.05, "
-            "b_y=0.25).parameters\n"
-            "lever_spring = {'k': _p['k'], 'a': (_p['a_x'], _p['a_y']), 'b': (_p['b_x'], _p['b_y'])}")
+            "_bx, _by = (_w['box'][0] + _w['box'][1]) / 2, (_w['box'][2] + _w['box'][3]) / 2\n"
+            "_ax = _w['weight'] * _w['length'] * _by / (_w['k'] * (_bx ** 2 + _by ** 2))\n"
+            "lever_spring = {'k': _w['k'], 'a': (_ax, -_ax * _bx / _by), 'b': (_bx, _by)}")
 
 
 def personal_r_c(student_id: str) -> str:
@@ -186,6 +187,19 @@ def personal_r_c(student_id: str) -> str:
             f"_n = _tn('1.1', {student_id!r})\n"
             "r_c = bl.lecture.single_link_counterweight(_n['mass'], _n['length'], _n['counter_mass'], "
             "link_mass=_n['link_mass']).parameters['r_c']")
+
+
+def personal_lever_energy(student_id: str) -> str:
+    """Code of a right answer to task 2.3 for ``student_id`` (the library's LaCoste lever on their numbers)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"lever_energy = bl.singh.lacoste_lever(**_tn('2.3', {student_id!r})).parameters['PE']")
+
+
+def personal_equivalent(student_id: str) -> str:
+    """Code of a right answer to task 1.3 for ``student_id`` (same mass, same first moment about D)."""
+    return ("from balancelab.course.check import task_numbers as _tn\n"
+            f"_c = _tn('1.3', {student_id!r})\n"
+            "m_equivalent = (_c['mass'] * (1 - _c['com'] / 0.5), _c['mass'] * _c['com'] / 0.5)")
 
 
 #: Modules that build the site or read it, or drive Chromium: one xdist worker runs them in this

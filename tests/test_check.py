@@ -182,7 +182,8 @@ RIGHT = {
     "2.1": lambda: 1.5 * bl.G * 0.4 / (0.25 * 0.12),  # k = m g r / (b c)
     "2.2": _lever_conditions,
     "2.3": lambda: bl.singh.lacoste_lever(weight=20.0, length=0.5, a_x=0.1, b_y=0.25).parameters["PE"],
-    "2.4": lambda: {"k": 300.0, "a": (0.3, 0.0), "b": (0.0, 0.2)},
+    # the stock rate 300 N/m, the anchor at the box's centre: a_x = W l b_y / (k |b|^2), a_y = -a_x b_x / b_y
+    "2.4": lambda: {"k": 300.0, "a": (0.24, 0.08), "b": (-0.075, 0.225)},
     "3.1": _pulley_radius,
     "3.2": lambda: -400.0 * 0.05 / 250.0,
     "3.3": _approximate_spring,
@@ -373,26 +374,53 @@ def test_open_design_checked_by_physics_lab1():
     assert np.max(d.joint_error(d.sample(200))) < 1e-12
 
 
-@pytest.mark.parametrize("free", [(0.3, 0.0, 0.2), (0.3, 0.05, 0.25), (0.25, -0.1, 0.3), (0.4, 0.0, 0.15)])
-def test_open_design_many_right_answers_lab2(free):
-    ax, bx, by = free
+@pytest.mark.parametrize("b", [(-0.1, 0.2), (-0.05, 0.25), (-0.075, 0.225), (-0.06, 0.21)])
+def test_open_design_many_right_answers_lab2(b):
+    """Any anchor in the mounting box works once a_x is solved from the stock rate (the generalized lever)."""
+    bx, by = b
+    ax = 30.0 * 0.6 * by / (300.0 * (bx ** 2 + by ** 2))
     d = bl.singh.generalized_lever(weight=30.0, length=0.6, a_x=ax, b_x=bx, b_y=by)
     p = d.parameters
+    assert p["k"] == pytest.approx(300.0)
     v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
     assert v.correct, str(v)
 
 
 def test_open_design_lab2_constraints_and_balance():
-    d = bl.singh.generalized_lever(weight=30.0, length=0.6, a_x=0.1, b_x=0.0, b_y=0.2)  # k = 900 N/m: too stiff
+    assert (ck.task_numbers("2.4", "")["k"], ck.task_numbers("2.4", "")["box"]) == (300.0, (-0.1, -0.05, 0.2, 0.25))
+    d = bl.singh.generalized_lever(weight=30.0, length=0.6, a_x=0.3, b_x=0.0, b_y=0.2)  # balanced, 300 N/m
     p = d.parameters
     v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
-    assert not v.correct and "k above" in v.message and "balanced" in v.message
-    v = check("2.4", {"k": 300.0 * 1.01, "a": (0.3, 0.0), "b": (0.0, 0.2)})
+    assert not v.correct and "outside your mounting box" in v.message and "balanced" in v.message
+    d = bl.singh.generalized_lever(weight=30.0, length=0.6, a_x=0.2, b_x=-0.075, b_y=0.225)  # in the box, 360 N/m
+    p = d.parameters
+    v = check("2.4", {"k": p["k"], "a": (p["a_x"], p["a_y"]), "b": (p["b_x"], p["b_y"])})
+    assert not v.correct and "stock spring's rate" in v.message and "balanced" in v.message
+    v = check("2.4", {"k": 300.0 * 1.01, "a": (0.24, 0.08), "b": (-0.075, 0.225)})
     assert not v.correct and "NOT balanced" in v.message
-    v = check("2.4", {"k": "300 N/m", "a": ("30 cm", 0.0), "b": (0.0, "200 mm")})
+    v = check("2.4", {"k": "300 N/m", "a": ("24 cm", 0.08), "b": (-0.075, "225 mm")})
     assert v.correct
-    v = check("2.4", {"k": -5.0, "a": (0.3, 0.0), "b": (0.0, 0.2)})
+    v = check("2.4", {"k": -5.0, "a": (0.24, 0.08), "b": (-0.075, 0.225)})
     assert not v.correct and "positive" in v.message
+
+
+def test_lever_design_does_not_fall_to_one_catalog_call():
+    """Brief c21b item 2: the catalog's levers, called with the load and a free choice as the chapter shows
+    them (LaCoste's, the generalized lever with the anchor in the box and a round a_x), are balanced but
+    miss the stock rate: the design needs the rate condition solved for a_x. Judged by physics for
+    several students."""
+    for sid in ("", "s1", "alice", "bob"):
+        n = ck.task_numbers("2.4", sid)
+        bx, by = (n["box"][0] + n["box"][1]) / 2, (n["box"][2] + n["box"][3]) / 2
+        for d in (bl.singh.lacoste_lever(weight=n["weight"], length=n["length"], a_x=0.3, b_y=by),
+                  bl.singh.generalized_lever(weight=n["weight"], length=n["length"], a_x=0.3, b_x=bx, b_y=by)):
+            p = d.parameters
+            v = core.check_data("2.4", ck.data.encode_answer(
+                {"k": p["k"], "a": (p["a_x"], p.get("a_y", 0.0)), "b": (p.get("b_x", 0.0), p["b_y"])}), sid)
+            assert not v.correct and "stock spring's rate" in v.message, (sid, str(v))
+        ax = n["weight"] * n["length"] * by / (n["k"] * (bx ** 2 + by ** 2))
+        right = {"k": n["k"], "a": (ax, -ax * bx / by), "b": (bx, by)}
+        assert core.check_data("2.4", ck.data.encode_answer(right), sid).correct, sid
 
 
 def test_lab_builders_balance_exactly_when_designed():
@@ -675,11 +703,17 @@ def _board_crank_by_hand(n):
 #: each personal numeric task's right answer from its numbers, by a route independent of its judge
 PERSONAL_RIGHT = {
     "1.1": lambda n: (n["mass"] * n["length"] + n["link_mass"] * n["length"] / 2) / n["counter_mass"],
+    # same mass and same first moment about D (DC = 0.5 m)
+    "1.3": lambda n: (n["mass"] * (1 - n["com"] / 0.5), n["mass"] * n["com"] / 0.5),
     "2.1": lambda n: n["mass"] * bl.G * n["length"] / (n["b"] * n["c"]),
+    # Singh's eq. 3, V = W l / 2 (a_x / b_y + b_y / a_x)
+    "2.3": lambda n: n["weight"] * n["length"] / 2 * (n["a_x"] / n["b_y"] + n["b_y"] / n["a_x"]),
     "3.1": lambda n: _pulley_radius_by_ratio(**n),
     "3.2": lambda n: -n["k"] * n["free_length"] / n["k_partner"],
     "4.1": _parallelogram_by_hand,
     "4.2": _singh_2r_pe,
+    # the sin(theta_2) terms of the energy: k1 a_y1 L2 = g (m2 s_x2 + m3 L2), by hand
+    "4.4": lambda n: bl.G * (n["m2"] * n["sx2"] + n["m3"] * n["L2"]) / (n["L2"] * n["ay1"]),
     "5.1": _lecture_crank_rate,
     "5.2": _singh_fourbar_pe,
     "6.1": _lift_by_hand,
@@ -728,3 +762,120 @@ def test_few_classmates_answers_pass_each_others_check(tid):
     assert rate < 0.01, f"{tid}: {100 * rate:.2f} % of classmate pairs pass each other's check"
     published = enc(_as_answer(PERSONAL_RIGHT[tid](ck.task_numbers(tid, ""))))
     assert not any(core.check_data(tid, published, sid).correct for sid in ids)
+
+
+def test_tolerance_study_uses_the_students_tolerances():
+    """Brief c21b item 1: task 8.2's rate tolerance is personal. The published study (2 % rates) and a
+    classmate's study whose rate tolerance is 25 % away score 0; the student's own study scores."""
+    from balancelab.methods.practice import tolerance
+
+    springs = lab8_reference_springs()
+    built = lab8.built_arm(springs)
+    enc = ck.data.encode_answer
+
+    def study(sid, seed):
+        tol = tolerance.Tolerances(**ck.task_numbers("8.2", sid))
+        return {"springs": springs, "quantile": tolerance.monte_carlo(built, tol, n=3000, grid=15, seed=seed).quantile(0.95)}
+
+    assert ck.task_numbers("8.2", "") == dict(k=0.02, attachment=0.0005, mass=0.01)
+    published = enc(_lab8_study())
+    ids = ("s1", "alice", "bob")
+    rates = {sid: ck.task_numbers("8.2", sid)["k"] for sid in ids}
+    assert all(abs(r / 0.02 - 1) > 0.25 for r in rates.values())
+    for sid in ids:
+        assert core.check_data("8.2", enc(study(sid, 7)), sid).correct, sid
+        assert not core.check_data("8.2", published, sid).correct, sid
+    friends = [(i, j) for i in ids for j in ids if i != j and abs(rates[i] / rates[j] - 1) > 0.25]
+    assert friends
+    for i, j in friends:
+        assert not core.check_data("8.2", enc(study(i, 7)), j).correct, (i, j)
+
+
+def test_rate_error_verdicts_say_derivative_and_sign():
+    """Brief c21b item 3: task 8.4's verdicts. The hint of a wrong formula is the way to a derivative
+    (not a balance condition set to zero), the symbol keeps its case, a flipped sign is named; and the
+    hint's claims hold: dV/dtheta_1 itself (the library's generalized force) at link 1's angle from the
+    horizontal, for any theta_2."""
+    from balancelab.methods.practice.forces import generalized_force
+
+    flipped = check("8.4", sp.sympify("epsilon*g*cos(theta_1)*(m_1*p_1 + m_2*l_1)"))
+    assert not flipped.correct and "opposite sign" in flipped.hint
+    assert flipped.message == "Your dV/dtheta_1 is not equivalent to the expected one."
+    wrong = check("8.4", sp.sympify("-epsilon*g*sin(theta_1)*(m_1*p_1 + m_2*l_1)"))
+    assert not wrong.correct and "coefficient to zero" not in wrong.hint
+    assert "differentiate" in wrong.hint and "reference line" in wrong.hint and "not minus it" in wrong.hint
+    right = check("8.4", RIGHT["8.4"]())
+    assert right.correct and right.message == "Your dV/dtheta_1 is equivalent to the expected one."
+    eps = 0.03
+    for q in ((0.3, 0.0), (0.3, 1.0), (-0.9, -0.6)):
+        _, Q = generalized_force(lab8.rate_error_arm(eps), np.array([q]))
+        by_formula = float(RIGHT["8.4"]().subs({"epsilon": eps, "g": bl.G, "m_1": 1.0, "p_1": 0.25, "m_2": 1.0,
+                                                 "l_1": 0.5, "theta_1": q[0]}))
+        assert Q[0, 0] == pytest.approx(by_formula, rel=1e-6)
+
+
+def test_pe_min_verdicts_say_largest_energy():
+    """Brief c21b item 3: task 4.5's hint is the way to the largest load energy (no coefficient is set to
+    zero), the symbol keeps its case; and the claim holds: the formula is the largest energy of the loads
+    over a grid of poses (theta_2 measured from link 1), for Singh's published 2R."""
+    wrong = check("4.5", sp.sympify("W_1*p_x1 + W_2*l + W_2*p_x2"))
+    assert not wrong.correct and "coefficient to zero" not in wrong.hint
+    assert "largest value" in wrong.hint and "amplitude" in wrong.hint
+    assert wrong.message == "Your PE_min is not equivalent to the expected one."
+    flipped = check("4.5", -RIGHT["4.5"]())
+    assert not flipped.correct and "opposite sign" in flipped.hint
+    t1, t2 = np.meshgrid(np.linspace(-np.pi, np.pi, 721), np.linspace(-np.pi, np.pi, 721))
+    W1, W2, (px1, py1), px2, l = 10.0, 20.0, (1.0, 0.5), 2.0, 1.5
+    energy = W1 * (px1 * np.sin(t1) + py1 * np.cos(t1)) + W2 * (l * np.sin(t1) + px2 * np.sin(t1 + t2))
+    formula = float(RIGHT["4.5"]().subs({"W_1": W1, "W_2": W2, "p_x1": px1, "p_y1": py1, "p_x2": px2, "l": l}))
+    assert energy.max() == pytest.approx(formula, rel=1e-4)
+    assert formula == pytest.approx(lab4.lab4_singh_arm().parameters["PE_min"], rel=1e-9)
+
+
+def _variant_formula(tid: str, n: dict):
+    """Each derive task's right formula for a student's variant, by hand (not through the judge)."""
+    if tid == "1.2":  # the arm's own centre of mass at f r
+        return sp.sympify(f"(m*r + ({n['f']})*m_l*r)/m_c")
+    if tid == "2.2":  # the load's moment W f l
+        return (sp.sympify("-a_x*b_x/b_y"), sp.sympify(f"W*({n['f']})*l*b_y/(a_x*(b_x**2 + b_y**2))"))
+    if tid == "4.5":  # the elbow carries (1 + c) W_2
+        return sp.sympify(f"sqrt((W_1*p_x1 + (1 + ({n['c']}))*W_2*l)**2 + (W_1*p_y1)**2) + W_2*p_x2")
+    if tid == "8.4":  # link 1 at theta_1 + alpha from the horizontal
+        return sp.sympify(f"-epsilon*g*(m_1*p_1 + m_2*l_1)*cos(theta_1 + ({n['alpha']}))")
+    return sp.sympify(f"-m*g*r*cos(theta + ({n['alpha']}))/sqrt(2*k*C - 2*k*m*g*r*sin(theta + ({n['alpha']})))")
+
+
+@pytest.mark.parametrize("tid", ["1.2", "2.2", "4.5", "8.4", "9.3"])
+def test_derive_tasks_have_personal_variants_the_book_formula_fails(tid):
+    """Brief c21b item 4: the name scan cannot be complete (``getattr(bl, "bal" + "ance")``), so the
+    answer's form carries the defence: each student derives a personal variant, and the book's (or a
+    docstring's) formula is wrong for them. Judged by equivalence at random instances."""
+    enc = ck.data.encode_answer
+    book = _variant_formula(tid, ck.task_numbers(tid, ""))
+    assert core.check_data(tid, enc(book), "").correct
+    assert core.check_data(tid, enc(RIGHT[tid]()), "").correct  # the published problem is the book's
+    ids = [f"s{i:03d}" for i in range(40)]
+    assert all(ck.task_numbers(tid, sid) != ck.task_numbers(tid, "") for sid in ids)
+    assert len({tuple(ck.task_numbers(tid, sid).values()) for sid in ids}) >= 4
+    for sid in ids[:6]:
+        mine = _variant_formula(tid, ck.task_numbers(tid, sid))
+        assert core.check_data(tid, enc(mine), sid).correct, sid
+        assert not core.check_data(tid, enc(book), sid).correct, sid
+
+
+def test_getattr_beats_the_name_scan_but_not_the_variant():
+    """The lever's balance conditions reached through ``getattr`` pass the name scan (nothing named) and
+    give the book's formula: right for the published lever, wrong for a student's variant."""
+    from balancelab.course.check.derive import shortcuts
+
+    source = ('d = getattr(bl.singh, "generalized_" + "lever")(weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)\n'
+              'eqs = [e.lhs for e in getattr(d, "balance_" + "conditions")()]')
+    assert shortcuts("2.2", source) == []  # the scan does not see it
+    d = getattr(bl.singh, "generalized_" + "lever")(weight=10.0, length=0.5, a_x=0.2, b_x=0.1, b_y=0.3)
+    eqs = [e.lhs for e in getattr(d, "balance_" + "conditions")()]
+    syms = {str(x): x for e in eqs for x in e.free_symbols}
+    sol = [x for x in sp.solve(eqs, [syms["a_y"], syms["k"]], dict=True) if x[syms["k"]] != 0][0]
+    answer = ck.data.encode_answer((sol[syms["a_y"]], sol[syms["k"]]))
+    assert core.check_data("2.2", answer, "").correct
+    student = next(sid for sid in (f"s{i}" for i in range(50)) if ck.task_numbers("2.2", sid)["f"] != "1")
+    assert not core.check_data("2.2", answer, student).correct

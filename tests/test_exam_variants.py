@@ -27,7 +27,7 @@ def _by_hand(name, n):
         k_bc = G * (n["m1"] * n["p1"] + n["m2"] * n["l1"])
         energy = lambda t: n["e"] * k_bc * (-math.sin(t))  # noqa: E731  (the b c-free part, per unit b c)
         t, h = math.radians(n["th"]), 1e-6
-        return abs((energy(t + h) - energy(t - h)) / (2 * h))
+        return (energy(t + h) - energy(t - h)) / (2 * h)
     raise KeyError(name)
 
 
@@ -41,7 +41,7 @@ def test_every_variant_answer_is_right_and_only_in_the_key(student):
     assert "Solution" not in handout and "Answer" not in handout
     for p, n in ev.variant(student):
         value = p.answer(n)
-        assert math.isclose(abs(value), abs(_by_hand(p.name, n)), rel_tol=1e-6), p.name
+        assert math.isclose(value, _by_hand(p.name, n), rel_tol=1e-6), p.name
         assert f"{value:.6g}" in key
         assert not any(s in handout for s in _formats(value) if len(s.strip("-0.").replace(".", "")) >= 4), (p.name, value)
         assert p.statement(n) in handout and p.solution(n) in key
@@ -85,3 +85,29 @@ def test_ids_are_case_insensitive_as_in_the_labs():
     from exam_variants import variant
 
     assert [n for _, n in variant("Alice")] == [n for _, n in variant("alice")] == [n for _, n in variant(" ALICE ")]
+
+
+@pytest.mark.parametrize("student", ["s001", "alice", "s199"])
+def test_rate_error_answer_is_the_hands_torque_dV_dtheta1(student):
+    """Brief c21b item 5: Problem 5's answer is dV/dtheta1, the torque a hand applies to link 1
+    (counter-clockwise positive), sign included: the library's generalized force of the lecture's
+    lamp arm with the student's numbers and spring 1 too stiff by e, at the student's angle and at
+    any elbow angle; the text and the solution say the same."""
+    import numpy as np
+
+    from balancelab.core.elements import Spring
+    from balancelab.methods.lecture import serial_2r_base_springs
+    from balancelab.methods.practice.forces import generalized_force
+
+    (p, n), = [(p, n) for p, n in ev.variant(student) if p.name == "rate-error"]
+    assert ev.PROBLEMS.index(p) == 4  # Problem 5 of the sheet
+    arm = serial_2r_base_springs(masses=(n["m1"], n["m2"]), length=n["l1"], coms=((n["p1"], 0.0), (0.2, 0.0)),
+                                 b=(0.3, 0.25), c=(0.15, 0.1))
+    stiff = arm.replace(springs=[Spring(s.k * (1 + n["e"]) if s.name == "k1" else s.k, s.free_length, s.a, s.b,
+                                        name=s.name) for s in arm.springs])
+    for elbow in (0.0, 0.7, -1.1):
+        _, Q = generalized_force(stiff, np.array([[math.radians(n["th"]), elbow]]))
+        assert math.isclose(p.answer(n), float(Q[0, 0]), rel_tol=1e-6, abs_tol=1e-12), (elbow, Q)
+    assert p.answer(n) < 0  # the stiff spring lifts the arm: the hand pushes clockwise
+    assert "dV/dtheta1 (counter-clockwise positive)" in p.statement(n) and "with its sign" in p.statement(n)
+    assert "dV/dtheta1 = -e g (m1 p1 + m2 l1) cos(theta1)" in p.solution(n)

@@ -10,7 +10,8 @@ import pytest
 
 from balancelab.course.check import tasks
 from balancelab.course.grading import GradeRow, grade_namespace, summary, write_csv
-from conftest import personal_k_lamp, personal_lever_spring, personal_r_c, submission_notebook
+from conftest import (personal_equivalent, personal_k_lamp, personal_lever_energy, personal_lever_spring, personal_r_c,
+                      submission_notebook)
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -25,22 +26,22 @@ def _write(folder, name, nb):
 
 K_LAMP = personal_k_lamp  # the student's own numbers: the id is the file name's (alice_lab2 -> alice)
 LEVER_SPRING = personal_lever_spring("alice")  # task 2.4: a design for alice's own load
-ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
+ENERGY = personal_lever_energy  # task 2.3 on the student's own lever
 
 
 @pytest.fixture(scope="module")
 def graded(tmp_path_factory):
     sub = tmp_path_factory.mktemp("submissions")
-    _write(sub, "alice_lab2.ipynb", submission_notebook("lab2", K_LAMP("alice"), ENERGY, LEVER_SPRING))
+    _write(sub, "alice_lab2.ipynb", submission_notebook("lab2", K_LAMP("alice"), ENERGY("alice"), LEVER_SPRING))
     _write(sub, "bob_lab2.ipynb", submission_notebook("lab2", "k_lamp = 12.0", "raise NotImplementedError('todo')",
                                       "lever_spring = {'k': 310.0, 'a': (0.3, 0.0), 'b': (0.0, 0.2)}"))
-    _write(sub, "carol_lab2.ipynb", submission_notebook("lab2", K_LAMP("carol"), "while True:\n    pass", ENERGY))
+    _write(sub, "carol_lab2.ipynb", submission_notebook("lab2", K_LAMP("carol"), "while True:\n    pass", ENERGY("carol")))
     (sub / "dave_lab2.ipynb").write_text("{not json")
     _write(sub, "erin_lab2.ipynb", submission_notebook("lab2", K_LAMP("erin"), "import os\nos._exit(1)"))
     _write(sub, "frank_notes.ipynb", submission_notebook("", "x = 1"))
     _write(sub, "hank_lab2.ipynb", submission_notebook("lab2", "for k in (100.0, 150.0, 200.0):\n    check('2.1', k)",
                                                        "check('2.3', 1.0)\ncheck('9.9', 1.0)"))
-    _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", personal_r_c("gina"), "m_equivalent = (0.72, 0.48)"))
+    _write(sub, "group/gina_lab1.ipynb", submission_notebook("lab1", personal_r_c("gina"), personal_equivalent("gina")))
     before = {p: hashlib.sha256(p.read_bytes()).hexdigest() for p in sub.rglob("*") if p.is_file()}
     out = sub.parent / "grades.csv"
     proc = subprocess.run([sys.executable, "-m", "balancelab.course.grading", str(sub), "--out", str(out),

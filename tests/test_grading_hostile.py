@@ -30,14 +30,14 @@ import pytest
 from balancelab.course.check import tasks
 from balancelab.course.grading import grade_answers, resolve_lab, shard
 from balancelab.course.sandbox import sandbox_available
-from conftest import personal_k_lamp, personal_lever_spring, personal_r_c, submission_notebook
+from conftest import personal_k_lamp, personal_lever_energy, personal_lever_spring, personal_r_c, submission_notebook
 
 ROOT = Path(__file__).resolve().parent.parent
 MARK = f"h3-hostile-{uuid.uuid4().hex[:12]}"
 SECRET = f"H18SECRET{uuid.uuid4().hex[:8]}"
 K_LAMP = personal_k_lamp  # a right answer to 2.1 for the student the file name names
 LEVER = personal_lever_spring("alice")  # task 2.4: a design for alice's own load
-ENERGY = "lever_energy = bl.singh.lacoste_lever(20.0, 0.5, 0.1, 0.25).parameters['PE']"
+ENERGY = personal_lever_energy  # task 2.3 on the student's own lever
 LAB2_MAX = str(int(sum(t.points for t in tasks(2))))
 PERSONAL = """from balancelab.course.check import set_student, task_numbers
 STUDENT_ID = {sid!r}
@@ -249,14 +249,14 @@ class _HostSocket:
 def _submissions(sub: Path, host: Path, sock: _HostSocket, home: Path, cwd: Path) -> None:
     victim, pwned = host / "victim.txt", host / "pwned.txt"
     notebooks = {
-        "alice_lab2": submission_notebook("lab2", K_LAMP("alice"), ENERGY, LEVER),
+        "alice_lab2": submission_notebook("lab2", K_LAMP("alice"), ENERGY("alice"), LEVER),
         "bob_lab2": submission_notebook("lab2", "k_lamp = 12.0", "lever_energy = 1.0", "lever_spring = {'k': 310.0, "
                         "'a': (0.3, 0.0), 'b': (0.0, 0.2)}"),
         "half_lab2": submission_notebook("lab2", K_LAMP("half"), "lever_energy = ...", "lever_spring = ..."),
         "crash_lab2": submission_notebook("lab2", "1 / 0", K_LAMP("crash")),
-        "loop_lab2": submission_notebook("lab2", K_LAMP("loop"), "while True:\n    pass", ENERGY),
+        "loop_lab2": submission_notebook("lab2", K_LAMP("loop"), "while True:\n    pass", ENERGY("loop")),
         "sigint_lab2": submission_notebook("lab2", K_LAMP("sigint"), "import signal\nsignal.signal(signal.SIGINT, "
-                           "signal.SIG_IGN)\nwhile True:\n    pass", ENERGY),
+                           "signal.SIG_IGN)\nwhile True:\n    pass", ENERGY("sigint")),
         "writer_lab2": submission_notebook("lab2", f"import os\nopen({str(pwned)!r}, 'w').write('x')",
                            f"os.remove({str(victim)!r})", K_LAMP("writer")),
         "detach_lab2": submission_notebook("lab2", "import subprocess, sys\nsubprocess.Popen([sys.executable, '-c', "

@@ -18,7 +18,7 @@ from ...core.design import Design, UnreachableConfiguration
 from ...core.elements import G
 from .core import AnswerError
 
-__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "as_mapping",
+__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "BALANCE_HINT", "variant", "as_mapping",
            "DESIGN_TOLERANCE", "design_balanced"]
 
 _UNITS = {
@@ -32,6 +32,15 @@ _UNITS = {
     "angle": ("rad", {"rad": 1.0, "deg": math.pi / 180, "°": math.pi / 180}),
     "ratio": ("", {"": 1.0, "%": 1e-2}),
 }
+
+
+def _cap(what: str) -> str:
+    """``what`` with its first letter in upper case and the rest as written (symbols keep their case).
+
+    >>> _cap("your dV/dtheta_1")
+    'Your dV/dtheta_1'
+    """
+    return what[:1].upper() + what[1:]
 
 
 def _plain_number(x) -> float | None:
@@ -85,10 +94,10 @@ def quantity(answer, dimension: str, what: str = "the answer") -> float:
     if isinstance(answer, str):
         m = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*", answer)
         if not m:
-            raise AnswerError(f"{what.capitalize()} {_short(answer)} does not start with a number.", hint)
+            raise AnswerError(f"{_cap(what)} {_short(answer)} does not start with a number.", hint)
         value, unit = float(m.group(1)), m.group(2)
         if unit == "" and si:
-            raise AnswerError(f"{what.capitalize()} {_short(answer)} has no unit.",
+            raise AnswerError(f"{_cap(what)} {_short(answer)} has no unit.",
                               f"Write the unit, e.g. '{_short(answer.strip())[1:-1]} {si}', or store a plain number in {si}.")
     elif isinstance(answer, tuple) and len(answer) == 2 and isinstance(answer[1], str):
         value, unit = _plain_number(answer[0]), answer[1].strip()
@@ -100,14 +109,14 @@ def quantity(answer, dimension: str, what: str = "the answer") -> float:
         if value is None:
             kind = type(answer).__name__
             if isinstance(answer, (list, tuple, np.ndarray)):
-                raise AnswerError(f"{what.capitalize()} should be one number, got a {kind} of "
+                raise AnswerError(f"{_cap(what)} should be one number, got a {kind} of "
                                   f"{len(answer)} items.", hint)
-            raise AnswerError(f"{what.capitalize()} should be a number, got {kind}"
+            raise AnswerError(f"{_cap(what)} should be a number, got {kind}"
                               f"{'' if answer is None else ' ' + _short(answer)}.", hint)
         unit = si
     if not math.isfinite(value):
         raise AnswerError("The answer is NaN or infinite; give a finite number." if what == "the answer"
-                          else f"{what.capitalize()} is NaN or infinite; give a finite number.", hint)
+                          else f"{_cap(what)} is NaN or infinite; give a finite number.", hint)
     if unit not in table:
         known = ", ".join(repr(u) for u in table if u)
         raise AnswerError(f"Unit {unit!r} is not a unit of {dimension} here.", f"Use one of {known}.")
@@ -144,11 +153,11 @@ def vector(answer, n: int, dimension: str, what: str = "the answer") -> list[flo
     [1.0, 0.2]
     """
     if isinstance(answer, (str, bytes, dict)) or not hasattr(answer, "__len__"):
-        raise AnswerError(f"{what.capitalize()} should be a tuple of {n} numbers, got {type(answer).__name__}.",
+        raise AnswerError(f"{_cap(what)} should be a tuple of {n} numbers, got {type(answer).__name__}.",
                           f"Write it like ({', '.join(['...'] * n)}).")
     items = list(np.asarray(answer, dtype=object).ravel()) if isinstance(answer, np.ndarray) else list(answer)
     if len(items) != n:
-        raise AnswerError(f"{what.capitalize()} should have {n} items, got {len(items)}.",
+        raise AnswerError(f"{_cap(what)} should have {n} items, got {len(items)}.",
                           f"Write it like ({', '.join(['...'] * n)}).")
     return [quantity(v, dimension, f"item {i + 1} of {what}") for i, v in enumerate(items)]
 
@@ -323,8 +332,13 @@ def numeric_vector(answer, expected, dimension: str, rtol: float = 5e-3,
     return False, f"{', '.join(bad)} not within {rtol * 100:g} %.", hint
 
 
+#: The hint of a wrong expression when its task gives none: the way to a balance condition.
+BALANCE_HINT = ("Write the potential energy, collect the terms in sin and cos of the angle, and set each "
+                "coefficient to zero.")
+
+
 def symbolic(answer, expected, names: str, what: str = "the expression",
-             signed: str = "") -> tuple[bool, str, str]:
+             signed: str = "", hint: str = BALANCE_HINT) -> tuple[bool, str, str]:
     """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
 
     Symbols are matched by name, whatever their assumptions. The difference must simplify
@@ -345,6 +359,10 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     signed : str
         Names (among ``names``) that may be negative: real symbols, sampled in
         ``[-2, -0.3] U [0.3, 2]`` by the spot check; the others are positive.
+    hint : str
+        The hint for a wrong expression: the way to the task's result (by default the way to a
+        balance condition, :data:`BALANCE_HINT`). An expression that is the expected one with the
+        opposite sign gets a hint that says so instead.
 
     Returns
     -------
@@ -367,49 +385,90 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
 
     sign = set(signed.split())
     allowed = {n: sp.Symbol(n, real=True) if n in sign else sp.Symbol(n, positive=True) for n in names.split()}
-    hint = f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
+    way, hint = hint, f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
     if isinstance(answer, (str,)):
         try:
             expr = sp.sympify(answer, locals=dict(allowed))
         except (sp.SympifyError, SyntaxError, TypeError, ValueError) as err:
-            raise AnswerError(f"{what.capitalize()} {_short(answer)} could not be read as a formula.", hint) from err
+            raise AnswerError(f"{_cap(what)} {_short(answer)} could not be read as a formula.", hint) from err
     elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
         expr = sp.sympify(answer)
     else:
-        raise AnswerError(f"{what.capitalize()} should be a sympy expression, got {type(answer).__name__}.",
+        raise AnswerError(f"{_cap(what)} should be a sympy expression, got {type(answer).__name__}.",
                           hint)
     if isinstance(expr, sp.Equality):
-        raise AnswerError(f"{what.capitalize()} is an equation; give the right-hand side only "
+        raise AnswerError(f"{_cap(what)} is an equation; give the right-hand side only "
                           "(an expression), e.g. the value of k.", hint)
     if not isinstance(expr, sp.Expr):
-        raise AnswerError(f"{what.capitalize()} is not an algebraic expression.", hint)
+        raise AnswerError(f"{_cap(what)} is not an algebraic expression.", hint)
     extra = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)
     if extra:
-        raise AnswerError(f"{what.capitalize()} uses symbols not in the problem: {', '.join(extra)}.", hint)
+        raise AnswerError(f"{_cap(what)} uses symbols not in the problem: {', '.join(extra)}.", hint)
     expr = expr.subs({s: allowed[str(s)] for s in expr.free_symbols})
     if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise AnswerError(f"{what.capitalize()} contains an infinity or NaN.", hint)
+        raise AnswerError(f"{_cap(what)} contains an infinity or NaN.", hint)
     expected = sp.sympify(expected).subs({s: allowed[str(s)] for s in sp.sympify(expected).free_symbols})
-    diff = sp.simplify(expr - expected)
-    if diff == 0:
-        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
+    if _equivalent(expr, expected, allowed, sign):
+        return True, f"{_cap(what)} is equivalent to the expected one.", ""
+    if _equivalent(-expr, expected, allowed, sign, exact=False):
+        return False, f"{_cap(what)} is not equivalent to the expected one.", \
+            "It is the expected expression with the opposite sign: check which way each term acts."
+    return False, f"{_cap(what)} is not equivalent to the expected one.", way
+
+
+def _equivalent(expr, expected, allowed: dict, sign: set, exact: bool = True) -> bool:
+    """Whether two expressions are equal: their difference simplifies to 0 (tried when ``exact``), or they
+    agree at six seeded points."""
+    import sympy as sp
+
+    if exact and sp.simplify(expr - expected) == 0:
+        return True
     rng = np.random.default_rng(1)
     syms = sorted(allowed.values(), key=str)
     f_a = sp.lambdify(syms, expr, "numpy")
     f_e = sp.lambdify(syms, expected, "numpy")
-    same = True
     for _ in range(6):
         drawn = rng.uniform(0.3, 2.0, len(syms))
         vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(drawn, syms)]
         a, e = complex(f_a(*vals)), complex(f_e(*vals))
         if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
-            same = False
-            break
-    if same:
-        return True, f"{what.capitalize()} is equivalent to the expected one.", ""
-    return False, f"{what.capitalize()} is not equivalent to the expected one.", \
-        "Write the potential energy, collect the terms in sin and cos of the angle, and set " \
-        "each coefficient to zero."
+            return False
+    return True
+
+
+def variant(rng: np.random.Generator | None, published: str, options: tuple[str, ...]) -> str:
+    """A derive task's personal variant: ``published`` for the published numbers, else one of ``options``.
+
+    A derive task whose formula stands in the book or a docstring gets a personal variant of its
+    problem (a centre of mass elsewhere, an extra weight, an angle from another line), so that the
+    printed formula, read by a student or found with ``getattr``, is wrong for them; the judge
+    compares the answer by equivalence with the variant's own formula.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator or None
+        The student's generator (:func:`~.core.student_rng`), or ``None`` for the published problem.
+    published : str
+        The published value, as SymPy text (e.g. ``"1/2"``).
+    options : tuple of str
+        The personal values (none equal to ``published``).
+
+    Returns
+    -------
+    str
+        SymPy text, e.g. ``"2/5"`` or ``"pi/6"``.
+
+    Examples
+    --------
+    >>> variant(None, "1/2", ("1/3", "2/3"))
+    '1/2'
+    >>> import numpy as np
+    >>> variant(np.random.default_rng(0), "1/2", ("1/3", "2/3")) in ("1/3", "2/3")
+    True
+    """
+    if published in options:
+        raise ValueError(f"options must not hold the published value {published!r}")
+    return published if rng is None else options[int(rng.integers(len(options)))]
 
 
 def as_mapping(answer, keys, what: str = "the design") -> dict:
@@ -439,11 +498,11 @@ def as_mapping(answer, keys, what: str = "the design") -> dict:
     """
     if not isinstance(answer, dict):
         layout = ", ".join(repr(k) + ": ..." for k in keys)
-        raise AnswerError(f"{what.capitalize()} should be a dict with keys {', '.join(map(repr, keys))}, "
+        raise AnswerError(f"{_cap(what)} should be a dict with keys {', '.join(map(repr, keys))}, "
                           f"got {type(answer).__name__}.", f"Write it like {{{layout}}}.")
     missing = [k for k in keys if k not in answer]
     if missing:
-        raise AnswerError(f"{what.capitalize()} is missing {', '.join(map(repr, missing))}.",
+        raise AnswerError(f"{_cap(what)} is missing {', '.join(map(repr, missing))}.",
                           f"Give all of {', '.join(map(repr, keys))}.")
     return answer
 

@@ -6,7 +6,9 @@ symbols, where the library returns numbers), and :data:`SHORTCUTS` names the lib
 would still produce it: :func:`shortcuts` finds them in a cell's source, and
 :func:`~.core.check` refuses an answer whose cell makes one (the verdict says which). A call
 hidden in another cell or behind an alias is not found: the form of the answer and a person
-reading the derivation remain the defence.
+reading the derivation remain the defence: every derive task is a personal variant of the book's
+problem (:func:`~.answers.variant`), so the book's or a docstring's formula, reached by any route,
+is wrong for a student with an id.
 """
 from __future__ import annotations
 

@@ -15,7 +15,7 @@ from ...core.design import Design
 from ...core.elements import gravity_load
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints, fourbar_labels
 from ...methods.lecture import equivalent_masses, single_link_counterweight
-from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic
+from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_ARM", "LAB1_FOURBAR", "lab1_fourbar"]
@@ -96,24 +96,49 @@ def _r_c(lamp: dict) -> float:
                                      link_mass=lamp["link_mass"]).parameters["r_c"]
 
 
+def _arm_numbers(rng) -> dict:
+    """Task 1.2's variant: the arm's own centre of mass at the fraction ``f`` of ``r`` from the pivot
+    (SymPy text); ``"1/2"`` (a uniform arm, the book's) for the published problem."""
+    return dict(f=variant(rng, "1/2", ("1/3", "2/5", "3/5", "2/3", "3/4")))
+
+
 @register_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",
-               "a sympy expression in m, r, m_l, m_c (any equivalent form is accepted)")
-def _t12(answer):
+               "a sympy expression in m, r, m_l, m_c for your arm (task_numbers('1.2'): its own centre of mass "
+               "at the fraction f of r from the pivot); any equivalent form is accepted", numbers=_arm_numbers)
+def _t12(answer, arm):
     import sympy as sp
 
     m, r, ml, mc = sp.symbols("m r m_l m_c", positive=True)
-    return symbolic(answer, (m * r + ml * r / 2) / mc, "m r m_l m_c", "your r_c")
+    f = sp.Rational(arm["f"])
+    return symbolic(answer, (m * r + f * ml * r) / mc, "m r m_l m_c", "your r_c",
+                    hint="Write the arm's potential energy with its own centre of mass at f r, and make the "
+                         "coefficient of sin(theta) vanish.")
+
+
+def _coupler_numbers(rng) -> dict:
+    """Task 1.3's coupler: ``mass`` (kg) and its centre of mass ``com`` (m from D along DC), published
+    (:data:`LAB1_FOURBAR`'s) or a student's (from ``rng``)."""
+    p = LAB1_FOURBAR
+    if rng is None:
+        return dict(mass=p["masses"][1], com=p["coms"][1][0])
+    return dict(mass=round(float(rng.uniform(0.8, 2.0)), 3), com=round(float(rng.uniform(0.08, 0.42)), 3))
+
+
+def _equivalent(numbers: dict) -> tuple[float, float]:
+    """Task 1.3's expected ``(m_D, m_C)`` (kg), from the library's equivalent masses."""
+    p, mass = LAB1_FOURBAR, numbers["mass"]
+    c = equivalent_masses(crank=p["crank"], coupler=p["coupler"], rocker=p["rocker"], mass=mass,
+                          com=(numbers["com"], 0.0))["c"].real
+    return mass * (1 - c), mass * c
 
 
 @register_task("1.3", "equivalent masses of the coupler at D and C", "m_equivalent", "numeric",
-               "a pair (m_D, m_C) in kg; each accepted within 0.5 %")
-def _t13(answer):
+               "a pair (m_D, m_C) in kg for your coupler (task_numbers('1.3'): its mass and its centre of "
+               "mass, m from D along DC); each accepted within 0.5 %", numbers=_coupler_numbers,
+               distinct=(lambda n: _equivalent(n)[1], 0.015))
+def _t13(answer, numbers):
     # D and C: the coupler's joints with the crank and with the rocker
-    p = LAB1_FOURBAR
-    mass = p["masses"][1]
-    c = equivalent_masses(crank=p["crank"], coupler=p["coupler"], rocker=p["rocker"], mass=mass,
-                          com=p["coms"][1])["c"].real
-    return numeric_vector(answer, (mass * (1 - c), mass * c), "mass", names=("m_D", "m_C"))
+    return numeric_vector(answer, _equivalent(numbers), "mass", names=("m_D", "m_C"))
 
 
 def _counterweight(answer: dict, key: str) -> tuple[float, tuple[float, float]]:

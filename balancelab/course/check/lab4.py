@@ -8,9 +8,10 @@ import numpy as np
 from ...core.design import Design
 from ...core.elements import Attachment, Load, Spring
 from ...methods.lecture import serial_2r_parallelogram
-from ...methods.lustig import lustig_values
+from ...methods.lustig import LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, lustig_values
+from ...methods.lustig import solve as lustig_solve
 from ...methods.singh import serial_2r_min_preload
-from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, vector
+from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, variant, vector
 from .core import AnswerError, register_task
 from .data import DesignData, decode_answer, encode_answer
 
@@ -163,18 +164,55 @@ def _t43(answer):
     return design_balanced(d, cons)
 
 
+#: The inputs of task 4.4 a student's numbers replace (the rest are Table 3e case 1's).
+_LUSTIG_PERSONAL = ("m2", "m3", "sx2", "ay1", "k2")
+
+
+def _lustig_numbers(rng) -> dict:
+    """Task 4.4's inputs (kg, m, N/m): case 1 of Table 3e (:func:`lustig_values` unsolved), or a student's
+    masses, centre of mass ``sx2``, anchor height ``ay1`` and rate ``k2`` (from ``rng``)."""
+    v = {k: float(x) for k, x in lustig_values(1, solved=False).items()}
+    if rng is None:
+        return v
+    u = lambda lo, hi, nd=3: round(float(rng.uniform(lo, hi)), nd)  # noqa: E731
+    v.update(m2=u(1.2, 3.0, 2), m3=u(1.2, 3.0, 2), sx2=u(0.06, 0.2), ay1=u(0.06, 0.16), k2=u(300.0, 900.0, 0))
+    return v
+
+
+def _lustig_k1(values: dict) -> float:
+    """Task 4.4's expected ``k1`` (N/m): the paper's conditions solved for its six unknowns."""
+    return float(lustig_solve(2, LUSTIG_TOPOLOGY, values, LUSTIG_UNKNOWNS)["k1"])
+
+
 @register_task("4.4", "spring rate k1 of Lustig et al.'s case 1 by the stiffness-matrix method", "k1_lustig",
-               "numeric", "a number in N/m; accepted within 0.5 %")
-def _t44(answer):
-    return numeric(answer, lustig_values(1)["k1"], "stiffness")
+               "numeric", "a number in N/m for your inputs (task_numbers('4.4')); accepted within 0.5 %",
+               numbers=_lustig_numbers, distinct=(_lustig_k1, 0.015))
+def _t44(answer, values):
+    return numeric(answer, _lustig_k1(values), "stiffness")
+
+
+#: Task 4.5's hint: PE_min is no balance condition (no coefficient is set to zero) but the largest
+#: value of the loads' energy over every pose.
+PE_MIN_HINT = ("PE_min is the largest value the loads' energy takes over all poses. Write that energy with "
+               "link 2's angle measured from link 1; link 1's terms in sin(theta_1) and cos(theta_1) make one "
+               "sinusoid (its largest value is its amplitude; the elbow's weights act at l), and theta_2 is free, "
+               "so link 2's largest value adds to it.")
+
+
+def _elbow_numbers(rng) -> dict:
+    """Task 4.5's variant: a motor of weight ``c W_2`` at the elbow (``c`` as SymPy text); ``"0"`` (no
+    motor, the book's arm) for the published problem."""
+    return dict(c=variant(rng, "0", ("1/4", "1/3", "1/2", "2/3", "3/4", "1")))
 
 
 @register_task("4.5", "formula for the least preload energy PE_min of Singh's 2R", "pe_min_formula", "symbolic",
-               "a sympy expression in W_1, W_2, p_x1, p_y1, p_x2, l (p_y2 = 0; any equivalent form accepted); "
-               "derived by hand: a cell that calls the library's solvers is refused")
-def _t45(answer):
+               "a sympy expression in W_1, W_2, p_x1, p_y1, p_x2, l (p_y2 = 0) for your arm (task_numbers('4.5'): "
+               "a motor of weight c W_2 at the elbow); any equivalent form accepted; derived by hand: a cell "
+               "that calls the library's solvers is refused", numbers=_elbow_numbers)
+def _t45(answer, arm):
     import sympy as sp
 
     W1, W2, px1, py1, px2, l = sp.symbols("W_1 W_2 p_x1 p_y1 p_x2 l", positive=True)
-    expected = sp.sqrt((W1 * px1 + W2 * l) ** 2 + (W1 * py1) ** 2) + W2 * px2
-    return symbolic(answer, expected, "W_1 W_2 p_x1 p_y1 p_x2 l", "your PE_min")
+    c = sp.Rational(arm["c"])
+    expected = sp.sqrt((W1 * px1 + (1 + c) * W2 * l) ** 2 + (W1 * py1) ** 2) + W2 * px2
+    return symbolic(answer, expected, "W_1 W_2 p_x1 p_y1 p_x2 l", "your PE_min", hint=PE_MIN_HINT)

@@ -8,8 +8,8 @@ generalized force (and, for task 8.2, a Monte Carlo of built arms) is evaluated.
 values are never revealed.
 
 * 8.1 (design, open): real extension springs, over pulleys, within :data:`LAB8_BUDGET`;
-* 8.2 (design): the 95 % quantile of a tolerance study of *those* springs, under
-  :data:`LAB8_QUANTILE_LIMIT`;
+* 8.2 (compute): the 95 % quantile of a tolerance study of *those* springs with the student's
+  tolerances (``task_numbers("8.2")``), under :data:`LAB8_QUANTILE_LIMIT`;
 * 8.3 (derive): the shoulder's residual torque when spring 1 is 2 % stiffer than ideal.
 """
 from __future__ import annotations
@@ -25,7 +25,7 @@ from ...methods.practice.forces import generalized_force
 from ...methods.practice.selection import spring_strokes
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.practice.tolerance import Tolerances, monte_carlo
-from .answers import as_mapping, numeric, quantity, symbolic
+from .answers import as_mapping, numeric, quantity, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB8_RATE_ERROR", "lab8_arm",
@@ -119,7 +119,7 @@ def built_arm(springs) -> Design:
     >>> arm = built_arm({"k1": {"d": 2e-3, "D": 20e-3, "Na": 20, "F_i": 4.0},
     ...                  "k2": {"d": 1e-3, "D": 10e-3, "Na": 30, "F_i": 2.5}})
     >>> [round(s.k, 1) for s in arm.springs]
-    [1021.2, 340.4]
+    [1021.3, 340.4]
     """
     real = real_springs(springs)
     ideal = lab8_arm()
@@ -208,20 +208,34 @@ def _t81(answer):
                   "within the allowable stresses of its body and hooks."), ""
 
 
+def _tolerance_numbers(rng) -> dict:
+    """Task 8.2's tolerances (standard deviations): rate ``k`` and ``mass`` (fractions), ``attachment`` (m);
+    :data:`LAB8_TOLERANCES`, or with a student's rate tolerance (from ``rng``): the rate's dominates the
+    quantile, so a rate tolerance 25 % from the published one moves the quantile past the 10 % accepted."""
+    published = dict(k=LAB8_TOLERANCES.k, attachment=LAB8_TOLERANCES.attachment, mass=LAB8_TOLERANCES.mass)
+    if rng is None:
+        return published
+    return dict(published, k=round(float(rng.uniform(0.01, 0.03)), 4))
+
+
 @register_task("8.2", "95 % quantile of the worst residual of built arms with your springs", "tolerance_study",
                "design", "a dict {'springs': your springs of task 8.1, 'quantile': N m}: the 95 % quantile of "
-               "the worst residual over a Monte Carlo of built arms with the lab's tolerances; accepted within "
-               "10 % of the grader's Monte Carlo, and it must be at most 0.5 N m", skill="compute")
-def _t82(answer, n: int = 4000):
+               "the worst residual over a Monte Carlo of built arms with your tolerances (task_numbers('8.2'): "
+               "standard deviations k and mass as fractions, attachment in m); accepted within 10 % of the "
+               "grader's Monte Carlo, and it must be at most 0.5 N m", skill="compute",
+               numbers=_tolerance_numbers, distinct=(lambda tol: tol["k"], 0.25))
+def _t82(answer, numbers, n: int = 4000):
     a = as_mapping(answer, ("springs", "quantile"), "your study")
     value = quantity(a["quantile"], "torque", "the quantile")
     design = built_arm(a["springs"])
     if value <= 0:
         raise AnswerError("The quantile must be a positive number of N m.", "Use result.quantile(0.95).")
-    reference = monte_carlo(design, LAB8_TOLERANCES, n, grid=15, seed=0).quantile(0.95)
+    tolerances = Tolerances(k=numbers["k"], attachment=numbers["attachment"], mass=numbers["mass"])
+    reference = monte_carlo(design, tolerances, n, grid=15, seed=0).quantile(0.95)
     if abs(value / reference - 1) > 0.10:
-        return (False, "Your quantile is not within 10 % of a Monte Carlo of your springs.",
-                "Use the lab's tolerances, enough built arms (>= 2000) and a grid over both angles.")
+        return (False, "Your quantile is not within 10 % of a Monte Carlo of your springs with your tolerances.",
+                "Use your tolerances (task_numbers('8.2')), enough built arms (>= 2000) and a grid over both "
+                "angles.")
     if reference > LAB8_QUANTILE_LIMIT:
         return (False, f"Right number, but 95 % of built arms exceed {LAB8_QUANTILE_LIMIT:g} N m.",
                 "Which tolerance dominates? Springs with rates closer to ideal do not help against it.")
@@ -250,15 +264,31 @@ def _t83(answer, numbers):
     return numeric(answer, _shoulder_torque(numbers), "torque")
 
 
+#: Task 8.4's hint: the residual is a derivative, not a condition set to zero; theta_1 is link 1's
+#: angle from the student's reference line and only the extra rate of spring 1 is unbalanced.
+RATE_ERROR_HINT = ("Only the extra rate epsilon k1 is unbalanced: write its spring's energy as a function of "
+                   "your theta_1 (link 1's angle from your reference line; the anchor b1 above the shoulder, the end c1 "
+                   "along link 1), differentiate it (dV/dtheta_1 itself, not minus it), then remove b1 and c1 "
+                   "with the ideal rate's balance condition for link 1.")
+
+
+def _angle_numbers(rng) -> dict:
+    """Task 8.4's variant: the student's ``theta_1`` is measured from a line at ``alpha`` (SymPy text, rad)
+    above the horizontal; ``"0"`` (from the horizontal, the book's) for the published problem."""
+    return dict(alpha=variant(rng, "0", ("pi/12", "pi/6", "pi/4", "pi/3", "pi/2", "-pi/6", "-pi/4")))
+
+
 @register_task("8.4", "formula for the shoulder torque dV/dtheta_1 left by a rate error eps of spring 1",
                "torque_formula", "symbolic",
                "a sympy expression in epsilon, g, m_1, p_1, m_2, l_1, theta_1: the derivative of the arm's "
-               "potential energy with respect to theta_1, sign included (any equivalent form accepted); "
-               "derived by hand: a cell that calls the library's solvers is refused")
-def _t84(answer):
+               "potential energy with respect to your theta_1 (task_numbers('8.4'): measured from a line at alpha "
+               "above the horizontal), sign included (any equivalent form accepted); "
+               "derived by hand: a cell that calls the library's solvers is refused", numbers=_angle_numbers)
+def _t84(answer, angle):
     import sympy as sp
 
     eps, g, m1, p1, m2, l1 = sp.symbols("epsilon g m_1 p_1 m_2 l_1", positive=True)
     th = sp.Symbol("theta_1", real=True)
-    expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th)
-    return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1")
+    expected = -eps * g * (m1 * p1 + m2 * l1) * sp.cos(th + sp.sympify(angle["alpha"]))
+    return symbolic(answer, expected, "epsilon g m_1 p_1 m_2 l_1 theta_1", "your dV/dtheta_1", signed="theta_1",
+                    hint=RATE_ERROR_HINT)

@@ -35,7 +35,7 @@ import numpy as np
 from ...core.elements import G
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.realize.profile_check import polyline_path, polyline_wrap
-from .answers import as_mapping, numeric, quantity, symbolic
+from .answers import as_mapping, numeric, quantity, symbolic, variant
 from .core import AnswerError, register_task
 
 __all__ = ["LAB9_LINK", "LAB9_EYELET", "LAB9_RANGE", "LAB9_MAX_RADIUS", "LAB9_MIN_CURVATURE", "LAB9_TOLERANCE",
@@ -267,27 +267,36 @@ def _t92(answer, load):
     return numeric(answer, _largest_tension(load), "force", rtol=2e-3)
 
 
-def _arm_expression():
-    """Task 9.3's expected arm ``h(theta)``, derived here with sympy from the energy balance."""
+def _arm_expression(alpha: str = "0"):
+    """Task 9.3's expected arm ``h(theta)``, derived here with sympy from the energy balance, for ``theta``
+    measured from a line at ``alpha`` (SymPy text, rad) above the horizontal."""
     import sympy as sp
 
     m, g, r, k, C, theta, u = sp.symbols("m g r k C theta u", positive=True)
-    V = m * g * r * sp.sin(theta)
+    V = m * g * r * sp.sin(theta + sp.sympify(alpha))
     stretch = [s for s in sp.solve(sp.Eq(k * u ** 2 / 2 + V, C), u) if s.could_extract_minus_sign() is False][0]
     return -sp.diff(V, theta) / (k * stretch)
 
 
+def _angle_numbers(rng) -> dict:
+    """Task 9.3's variant: ``theta`` measured from a line at ``alpha`` (SymPy text, rad) above the horizontal;
+    ``"0"`` (from the horizontal, the book's eq. ch9-arm) for the published problem."""
+    return dict(alpha=variant(rng, "0", ("pi/12", "pi/6", "pi/4", "-pi/12", "-pi/6", "-pi/4")))
+
+
 @register_task("9.3", "the signed arm h(theta) of the cable's line for the lecture's link (derive)", "arm_formula",
                "symbolic", "a sympy expression (or string) in m, g, r, k, C and theta: the distance from the pivot "
-               "to the cable's line, with the sign of eq. (ch9-arm); any equivalent form")
-def _t93(answer):
+               "to the cable's line, with the sign of eq. (ch9-arm), for your theta (task_numbers('9.3'): measured "
+               "from a line at alpha above the horizontal); any equivalent form", numbers=_angle_numbers)
+def _t93(answer, angle):
     import warnings
 
     import sympy as sp
 
-    expected = _arm_expression()
+    expected = _arm_expression(angle["alpha"])
     names = "m g r k C theta"
-    hint = "Solve k u^2/2 + V = C for the stretch u; the tension is k u, and eq. (ch9-arm) gives h = -V'/T."
+    hint = ("Write the link's energy V with your theta, solve k u^2/2 + V = C for the stretch u; the tension "
+            "is k u, and eq. (ch9-arm) gives h = -V'/T.")
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("ignore", RuntimeWarning)
         ok, message, _ = symbolic(answer, expected, names, "your h(theta)", signed="theta")
