@@ -18,7 +18,7 @@ from ...core.design import Design, UnreachableConfiguration
 from ...core.elements import G
 from .core import AnswerError
 
-__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "BALANCE_HINT", "variant", "as_mapping",
+__all__ = ["quantity", "vector", "point", "spring", "numeric", "numeric_vector", "symbolic", "BALANCE_HINT", "personal_option", "as_mapping",
            "DESIGN_TOLERANCE", "design_balanced"]
 
 _UNITS = {
@@ -436,8 +436,8 @@ def _equivalent(expr, expected, allowed: dict, sign: set, exact: bool = True) ->
     return True
 
 
-def variant(rng: np.random.Generator | None, published: str, options: tuple[str, ...]) -> str:
-    """A derive task's personal variant: ``published`` for the published numbers, else one of ``options``.
+def personal_option(rng: np.random.Generator | None, published: str, options: tuple[str, ...]) -> str:
+    """The option a derive task's personal variant draws: ``published`` for the published numbers, else one of ``options``.
 
     A derive task whose formula stands in the book or a docstring gets a personal variant of its
     problem (a centre of mass elsewhere, an extra weight, an angle from another line), so that the
@@ -460,10 +460,10 @@ def variant(rng: np.random.Generator | None, published: str, options: tuple[str,
 
     Examples
     --------
-    >>> variant(None, "1/2", ("1/3", "2/3"))
+    >>> personal_option(None, "1/2", ("1/3", "2/3"))
     '1/2'
     >>> import numpy as np
-    >>> variant(np.random.default_rng(0), "1/2", ("1/3", "2/3")) in ("1/3", "2/3")
+    >>> personal_option(np.random.default_rng(0), "1/2", ("1/3", "2/3")) in ("1/3", "2/3")
     True
     """
     if published in options:

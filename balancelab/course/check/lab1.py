@@ -15,7 +15,7 @@ from ...core.design import Design
 from ...core.elements import gravity_load
 from ...mechanisms.fourbar import FourBarKinematics, fourbar_joints, fourbar_labels
 from ...methods.lecture import equivalent_masses, single_link_counterweight
-from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic, variant
+from .answers import as_mapping, design_balanced, numeric, numeric_vector, point, quantity, symbolic, personal_option
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_ARM", "LAB1_FOURBAR", "lab1_fourbar"]
@@ -99,7 +99,7 @@ def _r_c(lamp: dict) -> float:
 def _arm_numbers(rng) -> dict:
     """Task 1.2's variant: the arm's own centre of mass at the fraction ``f`` of ``r`` from the pivot
     (SymPy text); ``"1/2"`` (a uniform arm, the book's) for the published problem."""
-    return dict(f=variant(rng, "1/2", ("1/3", "2/5", "3/5", "2/3", "3/4")))
+    return dict(f=personal_option(rng, "1/2", ("1/3", "2/5", "3/5", "2/3", "3/4")))
 
 
 @register_task("1.2", "formula for the counterweight distance r_c", "r_c_formula", "symbolic",

@@ -8,7 +8,7 @@ from ...core.elements import Load, Spring
 from ...mechanisms.lever import lever_design
 from ...methods.lecture import single_link_spring
 from ...methods.singh import lacoste_lever
-from .answers import design_balanced, numeric, spring, symbolic, variant
+from .answers import design_balanced, numeric, spring, symbolic, personal_option
 from .core import AnswerError, register_task
 
 __all__ = ["LAMP_SPRING", "LACOSTE", "LAB2_LEVER", "LAB2_BOX", "LAB2_STOCK_RATE", "lab2_lever"]
@@ -74,7 +74,7 @@ def _t21(answer, lamp):
 def _lever_variant(rng) -> dict:
     """Task 2.2's variant: the load at the fraction ``f`` of ``l`` from the pivot (SymPy text); ``"1"``
     (the load at ``l``, the book's lever) for the published problem."""
-    return dict(f=variant(rng, "1", ("1/2", "2/3", "3/4", "4/5", "5/4", "4/3")))
+    return dict(f=personal_option(rng, "1", ("1/2", "2/3", "3/4", "4/5", "5/4", "4/3")))
 
 
 @register_task("2.2", "balance conditions of the generalized lever: (a_y, k)", "lever_conditions", "symbolic",

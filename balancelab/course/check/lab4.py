@@ -11,7 +11,7 @@ from ...methods.lecture import serial_2r_parallelogram
 from ...methods.lustig import LUSTIG_TOPOLOGY, LUSTIG_UNKNOWNS, lustig_values
 from ...methods.lustig import solve as lustig_solve
 from ...methods.singh import serial_2r_min_preload
-from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, variant, vector
+from .answers import DESIGN_TOLERANCE, as_mapping, design_balanced, numeric, numeric_vector, symbolic, personal_option, vector
 from .core import AnswerError, register_task
 from .data import DesignData, decode_answer, encode_answer
 
@@ -202,7 +202,7 @@ PE_MIN_HINT = ("PE_min is the largest value the loads' energy takes over all pos
 def _elbow_numbers(rng) -> dict:
     """Task 4.5's variant: a motor of weight ``c W_2`` at the elbow (``c`` as SymPy text); ``"0"`` (no
     motor, the book's arm) for the published problem."""
-    return dict(c=variant(rng, "0", ("1/4", "1/3", "1/2", "2/3", "3/4", "1")))
+    return dict(c=personal_option(rng, "0", ("1/4", "1/3", "1/2", "2/3", "3/4", "1")))
 
 
 @register_task("4.5", "formula for the least preload energy PE_min of Singh's 2R", "pe_min_formula", "symbolic",

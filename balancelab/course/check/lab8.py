@@ -25,7 +25,7 @@ from ...methods.practice.forces import generalized_force
 from ...methods.practice.selection import spring_strokes
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.practice.tolerance import Tolerances, monte_carlo
-from .answers import as_mapping, numeric, quantity, symbolic, variant
+from .answers import as_mapping, numeric, quantity, symbolic, personal_option
 from .core import AnswerError, register_task
 
 __all__ = ["LAB8_ARM", "LAB8_BUDGET", "LAB8_TOLERANCES", "LAB8_QUANTILE_LIMIT", "LAB8_RATE_ERROR", "lab8_arm",
@@ -275,7 +275,7 @@ RATE_ERROR_HINT = ("Only the extra rate epsilon k1 is unbalanced: write its spri
 def _angle_numbers(rng) -> dict:
     """Task 8.4's variant: the student's ``theta_1`` is measured from a line at ``alpha`` (SymPy text, rad)
     above the horizontal; ``"0"`` (from the horizontal, the book's) for the published problem."""
-    return dict(alpha=variant(rng, "0", ("pi/12", "pi/6", "pi/4", "pi/3", "pi/2", "-pi/6", "-pi/4")))
+    return dict(alpha=personal_option(rng, "0", ("pi/12", "pi/6", "pi/4", "pi/3", "pi/2", "-pi/6", "-pi/4")))
 
 
 @register_task("8.4", "formula for the shoulder torque dV/dtheta_1 left by a rate error eps of spring 1",

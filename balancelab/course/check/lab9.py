@@ -35,7 +35,7 @@ import numpy as np
 from ...core.elements import G
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.realize.profile_check import polyline_path, polyline_wrap
-from .answers import as_mapping, numeric, quantity, symbolic, variant
+from .answers import as_mapping, numeric, quantity, symbolic, personal_option
 from .core import AnswerError, register_task
 
 __all__ = ["LAB9_LINK", "LAB9_EYELET", "LAB9_RANGE", "LAB9_MAX_RADIUS", "LAB9_MIN_CURVATURE", "LAB9_TOLERANCE",
@@ -281,7 +281,7 @@ def _arm_expression(alpha: str = "0"):
 def _angle_numbers(rng) -> dict:
     """Task 9.3's variant: ``theta`` measured from a line at ``alpha`` (SymPy text, rad) above the horizontal;
     ``"0"`` (from the horizontal, the book's eq. ch9-arm) for the published problem."""
-    return dict(alpha=variant(rng, "0", ("pi/12", "pi/6", "pi/4", "-pi/12", "-pi/6", "-pi/4")))
+    return dict(alpha=personal_option(rng, "0", ("pi/12", "pi/6", "pi/4", "-pi/12", "-pi/6", "-pi/4")))
 
 
 @register_task("9.3", "the signed arm h(theta) of the cable's line for the lecture's link (derive)", "arm_formula",
