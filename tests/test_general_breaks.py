@@ -2,10 +2,13 @@
 user's seat (``import balancelab as bl``) and kept as a regression test."""
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
 import balancelab as bl
+from balancelab.methods.general import free_choices
 
 G = 9.81
 C = 100.0  # N/m: the rate of the given spring, which fixes the candidate's rate
@@ -105,3 +108,58 @@ def test_a_micro_linkage_gets_a_micro_box():
     d, local = arm(scale=3e-5)
     out = bl.balance(d, springs=candidate(local))
     assert out.parameters["box_x_hi"] - out.parameters["box_x_lo"] == pytest.approx(2 * 2 * 3e-5, rel=1e-9)
+
+
+# ---------------------------------------------------------------- breaks 5, 6, 9: configurations, n, a balanced design
+def lever():
+    lk = bl.Linkage("lever")
+    lk.revolute("ground", (0.0, 0.0), "arm", (0.0, 0.0))
+    lk.mass("arm", 2.0, com=(0.5, 0.0))
+    return lk.build()
+
+
+def two_r():
+    lk = bl.Linkage("2R")
+    lk.revolute("ground", (0.0, 0.0), "l1", (0.0, 0.0))
+    lk.revolute("l1", (1.0, 0.0), "l2", (0.0, 0.0))
+    lk.mass("l1", 1.0, com=(0.5, 0.0))
+    lk.mass("l2", 1.0, com=(0.5, 0.0))
+    return lk.build()
+
+
+@pytest.mark.parametrize("jitter", [1e-12, 1e-9, 1e-6])
+def test_degenerate_configurations_are_refused(jitter):
+    """BREAK13: one pose jittered, or a line through a 2-DOF space, is no evidence of balance."""
+    rng = np.random.default_rng(0)
+    d = two_r()
+    t = np.linspace(-3.0, 3.0, 200)
+    with pytest.raises(ValueError, match="q must"):
+        d.balance_report(np.c_[t, t] + rng.normal(0.0, jitter, (200, 2)))
+    with pytest.raises(ValueError, match="q must"):
+        d.balance_report(np.full((60, 2), 0.3) + rng.normal(0.0, jitter, (60, 2)))
+
+
+def test_a_huge_n_is_refused_by_name_before_any_allocation():
+    d = lever()
+    for call in (lambda: bl.balance(d, springs=[(("arm", (0.25, 0.0)), ("ground", None))], n=10 ** 12),
+                 lambda: d.balance_report(n=10 ** 12),
+                 lambda: free_choices(d, springs=[(("arm", (0.25, 0.0)), ("ground", None))], n=10 ** 9)):
+        with pytest.raises(ValueError, match=r"n \(number of configurations\).*200000"):
+            call()
+
+
+@pytest.mark.parametrize("objective", ["min_preload", "min_stiffness"])
+def test_a_balanced_design_passed_again_keeps_its_springs_quietly(objective):
+    """Break 9: the solver may find k = 2e-15 for a candidate a balanced design does not need: dropped."""
+    d = bl.balance(lever(), springs=[(("arm", (0.25, 0.0)), ("ground", (0.0, 0.4)))])
+    for cands in ([(("arm", (0.25, 0.0)), ("ground", (0.0, 0.4)))], [(("arm", (0.3, 0.1)), ("ground", (0.1, 0.4)))],
+                  [(("arm", (0.3, 0.1)), ("ground", None))]):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # no RuntimeWarning of a 0 / 0 inside the solver either
+            out = bl.balance(d, springs=cands, objective=objective)
+        assert len(out.springs) in (1, 2) and out.balance_report().balanced
+        assert all(s.k >= 1e-12 for s in out.springs)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = bl.balance(d, counterweights=[("arm", (-0.1, 0.0))], objective=objective)
+    assert out.balance_report().balanced and len(out.loads) == 1  # a zero counter mass is left out

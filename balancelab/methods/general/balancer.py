@@ -14,6 +14,7 @@ from ...core.design import Design
 from ...core.elements import Load, Spring, G
 from ...core.validation import MAX_MAGNITUDE, MIN_POSITIVE, planar_point, positive_int
 from ...core.errors import InfeasibleDesign
+from ...core.report import MAX_CONFIGURATIONS
 from .problem import Block, columns
 from .bilinear import search
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
@@ -252,7 +253,8 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
         large it is drawn (:mod:`.box`). When a point outside it would balance, the default
         boxes grow about their centres (up to 1000 times) before ``balance`` gives up.
     n : int, optional
-        Number of sampled configurations (default: enough for the unknowns, at least 240).
+        Number of sampled configurations, ``20..MAX_CONFIGURATIONS`` (200 000; default: enough
+        for the unknowns, at least 240).
 
     Returns
     -------
@@ -287,7 +289,7 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
     if objective not in OBJECTIVES:
         raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
     _blocks(design, list(springs), list(counterweights), _box(box, design))  # check the input first
-    m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20)
+    m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20, maximum=MAX_CONFIGURATIONS)
     q = design.sample(max(m, 6 * 3 * (len(springs) + len(counterweights))) if n is None else m, seed=0)
     vl, vs = design.element_energies(q)
     if not (np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) > 0:
@@ -354,7 +356,8 @@ def free_choices(design: Design, springs: Sequence = (), counterweights: Sequenc
     (3, 2, 1)
     """
     blocks = _blocks(design, list(springs), list(counterweights), _box(None, design))
-    q = design.sample(240 if n is None else positive_int("n", n, minimum=20), seed=0)
+    q = design.sample(240 if n is None else positive_int("n (number of configurations)", n, minimum=20,
+                                                         maximum=MAX_CONFIGURATIONS), seed=0)
     p = columns(design, blocks, q)
     r = rank_of(p.A / column_norms(p))[0]
     x = np.linalg.lstsq(p.A, -p.v, rcond=1e-12)[0]

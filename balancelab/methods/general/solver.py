@@ -213,7 +213,7 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
 
     D = column_norms(p)
     r, U, s, Vt = rank_of(p.A / D)
-    sigma = max(np.linalg.norm(p.v), 1e-300)
+    sigma = _scale(p)
     eq = (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma)
     S = sigma / D  # x = S y
     bounds, A_ub, b_ub = lp_constraints(p, S)
@@ -237,6 +237,14 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
     if not convex and r < p.nvar:
         sol.unique = _unique(p, c * S, lp, A_ub, b_ub, eq, bounds)
     return sol
+
+
+def _scale(p: Problem) -> float:
+    """The energy (J) the variables are scaled by: that of what the design carries, or, for a design
+    balanced already (``v`` is then exactly zero), the spreads of its elements' energies (a scale of
+    1e-300 would make the scaled rates 0 / 0)."""
+    norm = float(np.linalg.norm(p.v))
+    return norm if norm > 0 else max(p.load_spread * np.sqrt(max(len(p.v), 1)), 1e-300)
 
 
 def _unique(p: Problem, cost: np.ndarray, lp, A_ub, b_ub, eq, bounds) -> bool:
