@@ -11,6 +11,8 @@ the usual way (each body's proximal joint at its local origin) gets the square
 from __future__ import annotations
 
 
+import numpy as np
+
 from ...core.design import Design
 
 __all__ = ["centres", "linkage_size", "default_boxes"]
@@ -47,7 +49,8 @@ def centres(design: Design) -> list[tuple[float, float]]:
 
 def linkage_size(design: Design) -> float:
     """The linkage's size (m): the largest ``|x - c_x|`` or ``|y - c_y|`` of a joint, load or spring end point
-    from its body's centre ``c`` (:func:`centres`); 0 only for a linkage drawn as one point.
+    from its body's centre ``c`` (:func:`centres`), or half a slide's range if larger; 0 only for a
+    linkage drawn as one point that does not slide.
 
     Examples
     --------
@@ -62,7 +65,9 @@ def linkage_size(design: Design) -> float:
     pts = [(j.body_i, j.point_i) for j in design.joints] + [(j.body_j, j.point_j) for j in design.joints]
     pts += [(ld.body, ld.point) for ld in design.loads]
     pts += [(e.body, e.point) for sp in design.springs for e in (sp.a, sp.b)]
-    return float(max([abs(p[a] - c[b][a]) for b, p in pts for a in (0, 1)], default=0.0))
+    slides = [(hi - lo) / 2 for (lo, hi), unit in zip(np.asarray(design.q_range, dtype=float).reshape(-1, 2),
+                                                       getattr(design.kinematics, "units", ())) if unit == "m"]
+    return float(max([abs(p[a] - c[b][a]) for b, p in pts for a in (0, 1)] + slides, default=0.0))
 
 
 def default_boxes(design: Design, factor: float = 1.0) -> list[tuple]:
