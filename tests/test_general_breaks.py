@@ -163,3 +163,27 @@ def test_a_balanced_design_passed_again_keeps_its_springs_quietly(objective):
         warnings.simplefilter("error")
         out = bl.balance(d, counterweights=[("arm", (-0.1, 0.0))], objective=objective)
     assert out.balance_report().balanced and len(out.loads) == 1  # a zero counter mass is left out
+
+
+def test_the_default_objective_owes_no_warning_for_a_counterweight():
+    """Break 8: with the default objective (minimum preload) and a counterweight whose point is free, the
+    objective counts no mass; the counterweight is made the lightest (its point at the box's far edge), quietly."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        out = bl.balance(lever(), counterweights=[("arm", None)], box=((-0.5, 0.1), (-0.1, 0.1)))
+    assert out.parameters["c_x1"] == pytest.approx(-0.5, rel=1e-9)
+    assert out.parameters["counter_mass1"] == pytest.approx(2.0 * 0.5 / 0.5, rel=1e-9)
+    assert out.balance_report().balanced
+
+
+@pytest.mark.parametrize("rot", [0.3, 0.7854, 2.0])
+def test_turning_the_drawing_keeps_the_default_box_size_and_the_design(rot):
+    """BREAK7: the default box's size is a distance, not an x or y extent: a drawing turned by any angle
+    gets a box as large, and the same anchor (the ground frame is the world's)."""
+    ref, _ = arm()
+    turned, local = arm(rot)
+    a = bl.balance(ref, springs=candidate(lambda p: p))
+    b = bl.balance(turned, springs=candidate(local))
+    assert b.parameters["box_x_hi"] - b.parameters["box_x_lo"] == pytest.approx(
+        a.parameters["box_x_hi"] - a.parameters["box_x_lo"], rel=1e-12)
+    assert (b.parameters["b_x2"], b.parameters["b_y2"]) == pytest.approx((0.0, NEEDED_Y), abs=1e-9)

@@ -241,14 +241,15 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
         energy (Singh's minimum preload: the constant total energy as low as it goes), the
         smallest total stiffness (N/m), or the smallest total counter mass (kg). Ties: an
         objective ignores the candidates it does not count (counterweights for the stiffness,
-        springs for the mass); when other designs reach the same value a UserWarning says so,
+        springs for the mass; the minimum preload's counterweights are made the lightest among
+        the designs of least preload, with fixed spring ends); when other designs reach the same value a UserWarning says so,
         and the design returned is simply the linear program's optimal vertex (HiGHS), picked
         by no further rule.
     box : ((x_lo, x_hi), (y_lo, y_hi)), optional
         Where free points may go, in their bodies' local frames (m). By default each body
         gets its own square, centred on the body's proximal joint point (its end of the joint
         that first reaches it from the ground; for the ground, its first joint) and of
-        half-width the linkage's size (the largest x or y distance of a joint or load point
+        half-width the linkage's size (the largest distance of a joint, load or spring end point
         from its body's centre): it moves and scales with the drawing, wherever and however
         large it is drawn (:mod:`.box`). When a point outside it would balance, the default
         boxes grow about their centres (up to 1000 times) before ``balance`` gives up.

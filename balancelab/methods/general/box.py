@@ -3,10 +3,11 @@
 Each body's box is a square in its local frame, centred on the body's *proximal joint point*
 (its end of the joint that first reaches it from the ground, walking the joints breadth first;
 for the ground, the ground end of its first joint) and of half-width the linkage's *size*: the
-largest distance (along x or y) of a joint or load point from its body's centre. Translating
-every point of a drawing translates each box; scaling every length scales it. A linkage drawn
-the usual way (each body's proximal joint at its local origin) gets the square
-``[-size, size]^2`` about the origin. Layer: methods.
+largest distance of a joint, load or spring end point from its body's centre (or half a
+slide's range). Translating every point of a drawing translates each box, scaling every length
+scales it, and turning the drawing keeps its size. A linkage drawn the usual way (each body's
+proximal joint at its local origin, its points on the axes) gets the square ``[-size, size]^2``
+about the origin. Layer: methods.
 """
 from __future__ import annotations
 
@@ -48,9 +49,9 @@ def centres(design: Design) -> list[tuple[float, float]]:
 
 
 def linkage_size(design: Design) -> float:
-    """The linkage's size (m): the largest ``|x - c_x|`` or ``|y - c_y|`` of a joint, load or spring end point
-    from its body's centre ``c`` (:func:`centres`), or half a slide's range if larger; 0 only for a
-    linkage drawn as one point that does not slide.
+    """The linkage's size (m): the largest distance of a joint, load or spring end point from its
+    body's centre (:func:`centres`), or half a slide's range if larger (the same however the drawing
+    is turned); 0 only for a linkage drawn as one point that does not slide.
 
     Examples
     --------
@@ -67,7 +68,7 @@ def linkage_size(design: Design) -> float:
     pts += [(e.body, e.point) for sp in design.springs for e in (sp.a, sp.b)]
     slides = [(hi - lo) / 2 for (lo, hi), unit in zip(np.asarray(design.q_range, dtype=float).reshape(-1, 2),
                                                        getattr(design.kinematics, "units", ())) if unit == "m"]
-    return float(max([abs(p[a] - c[b][a]) for b, p in pts for a in (0, 1)] + slides, default=0.0))
+    return float(max([float(np.hypot(p[0] - c[b][0], p[1] - c[b][1])) for b, p in pts] + slides, default=0.0))
 
 
 def default_boxes(design: Design, factor: float = 1.0) -> list[tuple]:
