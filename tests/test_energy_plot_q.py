@@ -44,3 +44,17 @@ def test_a_slide_outside_its_stroke_is_refused_in_metres():
     ax = bl.energy_plot(d, q=0.2)
     assert float(np.asarray(ax.energy.marker.get_data()[0])[0]) == pytest.approx(0.2)
     plt.close("all")
+
+
+def test_a_micro_stroke_is_plotted_over_its_whole_range():
+    """Break 4: a 1 µm stroke: the curves sample the whole stroke (no step of an absolute size), a
+    marker inside it is drawn, one just outside it is refused."""
+    d = block_on_guide(stroke=(0.0, 1e-6))
+    ax = bl.energy_plot(d, q=5e-7)
+    x, y = ax.energy.lines["total"].get_data()
+    assert len(x) == 241 and np.isfinite(y).all()
+    assert float(np.min(x)) == pytest.approx(0.0, abs=1e-15) and float(np.max(x)) == pytest.approx(1e-6, rel=1e-9)
+    assert np.ptp(y) == pytest.approx(9.81 / 2 * 1e-12, rel=1e-6)  # k s^2 / 2 over the stroke (k = m g / 1 m)
+    with pytest.raises(ValueError, match="q must lie"):
+        bl.energy_plot(d, q=1.1e-6)
+    plt.close("all")
