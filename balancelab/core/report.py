@@ -44,6 +44,10 @@ BALANCE_TOLERANCE: float = 1e-9
 #: Fewest distinct configurations a report accepts.
 MIN_CONFIGURATIONS: int = 10
 
+#: Most configurations a report (or ``balance``) samples: ``n`` beyond it is refused, not allocated
+#: until memory runs out.
+MAX_CONFIGURATIONS: int = 200_000
+
 #: Smallest part of each coordinate's reachable range the configurations must span.
 MIN_COVERAGE: float = 0.25
 
@@ -316,7 +320,7 @@ def _configurations(design, q, n, seed) -> np.ndarray:
     at least MIN_COVERAGE of each coordinate's reachable range."""
     if q is None:
         what = "n"
-        n = positive_int("n (number of configurations)", n, minimum=MIN_CONFIGURATIONS)
+        n = positive_int("n (number of configurations)", n, minimum=MIN_CONFIGURATIONS, maximum=MAX_CONFIGURATIONS)
         q = design.sample(n, seed)
     else:
         what = "q"

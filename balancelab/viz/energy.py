@@ -24,8 +24,9 @@ from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, r
 
 if TYPE_CHECKING:
     from matplotlib.image import AxesImage
+    from numpy.typing import ArrayLike
 
-__all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "q_symbol", "report_summary",
+__all__ = ["EnergyView", "describe_energy", "energy_limits", "energy_plot", "marked_q", "q_symbol", "report_summary",
            "sweep_path"]
 
 
@@ -444,8 +445,8 @@ class EnergyView:
             self.note.set_visible(False)
 
     def set_q(self, q) -> None:
-        """Move the marker to configuration ``q`` (rad)."""
-        q = np.asarray(q, dtype=float).reshape(-1)
+        """Move the marker to configuration ``q`` (rad, or m for a slide), which must lie in the design's range."""
+        q = marked_q(self.design, q)
         if self.path:  # the nearest point of the path
             k = int(np.argmin(np.sum((self.grid - q) ** 2, axis=-1)))
             self.marker.set_data([100 * self.t[k]], [float(self.total[k])])
@@ -455,6 +456,44 @@ class EnergyView:
         else:
             u = q_units(self.design)
             self.marker.set_data([q_shown(u[0], q[0])], [q_shown(u[1], q[1])])
+
+
+def marked_q(design: Design, q: ArrayLike) -> np.ndarray:
+    """``q`` as one configuration of ``design`` inside its range ``design.q_range`` (an angle that
+    differs from one inside by whole turns is brought inside), or a ValueError naming ``q`` and the range.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> d = bl.singh.scissors_lift()
+    >>> marked_q(d, 0.5).tolist()
+    [0.5]
+    >>> marked_q(d, 2.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: q must lie in the design's range theta = 0.0°..90.0°, got theta = 114.6°
+    """
+    given = design.check_q(q).reshape(-1)
+    if given.size != design.dof:
+        raise ValueError(f"q must be one configuration ({design.dof} coordinates {design.q_names}), got {given.size} values")
+    units = q_units(design)
+    rng = np.asarray(design.q_range, dtype=float).reshape(-1, 2)
+    out = given.copy()
+    for i, (unit, v, (lo, hi)) in enumerate(zip(units, given, rng)):
+        tol = 1e-9 * max(hi - lo, abs(lo), abs(hi), 1e-300)
+        if unit == "rad":  # whole turns apart are the same pose; a range of a whole turn holds every angle
+            x = lo + (v - lo) % (2 * np.pi)
+            inside = hi - lo >= 2 * np.pi - tol or x <= hi + tol or x >= lo + 2 * np.pi - tol
+            if hi - lo < 2 * np.pi - tol:  # the angle inside the range, as the kinematics takes it
+                out[i] = x if x <= hi + tol else x - 2 * np.pi
+        else:
+            inside = lo - tol <= v <= hi + tol
+        if not inside:
+            names = design.q_names
+            span = ", ".join(f"{n} = {format_q((u,), [a])}..{format_q((u,), [b])}"
+                             for n, u, (a, b) in zip(names, units, rng))
+            raise ValueError(f"q must lie in the design's range {span}, got {format_q(units, given, names)}")
+    return out
 
 
 def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residual: bool | None = None,
@@ -478,7 +517,8 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     ax : matplotlib.axes.Axes, optional
         Axes to draw on (a new figure by default).
     q : array_like, optional
-        A configuration (rad) to mark.
+        A configuration (rad, or m for a slide) to mark, inside ``design.q_range`` (an angle
+        may differ by whole turns); outside it a ValueError names ``q`` and the range.
     n : int, optional
         Points (an integer >= 2) along the range (1 dof, default 241) or per side of the map (2 dof,
         default 61).

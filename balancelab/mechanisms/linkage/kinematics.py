@@ -99,7 +99,9 @@ class LinkageKinematics(Kinematics):
         self.strokes = np.array([(-2 * self.size, 2 * self.size) if st is None else st
                                  for st in (strokes or [None] * len(self.sliders))], dtype=float).reshape(-1, 2)
         self.scale = np.where(np.arange(self.nvar) >= self.nbodies, self.size, 1.0)  # rad, or m for a slide
-        self.tol = 1e-13 * self.size
+        # closure to 1e-13 of the size, and to 1e-10 m where round-off allows (a linkage 1e5 m across
+        # still closes its joints to the 1e-9 m a Design checks)
+        self.tol = max(min(1e-13 * self.size, 1e-10), 1e-15 * self.size)
         self.accept = 1e-10 * self.size
         self.solved = self.topology.nequations > 0  # else every body angle is a coordinate
         self.assembled = self._assemble(guess)
@@ -146,8 +148,12 @@ class LinkageKinematics(Kinematics):
         """Angles of an assembled configuration at which the linkage has its generic mobility.
 
         The starts are tried in order: ``guess``, the drawing (every body angle zero: the local
-        frames as the joint points were written), then fixed pseudo-random starts; the first that
-        closes every loop is taken. If the constraint Jacobian loses rank there (a change point,
+        frames as the joint points were written), the drawing with each slide in the middle of its
+        stroke and a quarter of the stroke above it, then fixed pseudo-random starts; the first that
+        closes every loop with every slide within its stroke (the first that closes them, if none
+        does) and on which, once moved off a change point, every slide can move is taken (not a
+        degenerate component such as a scissors drawn folded, whose arms lie on each other and turn
+        together while its slide stays at 0). If the constraint Jacobian loses rank there (a change point,
         such as a parallelogram drawn flat), the configuration is moved off it (:meth:`_regular`)."""
         n = self.nvar
         starts = np.random.default_rng(0).uniform(-np.pi, np.pi, (_STARTS, n)) * self.scale
@@ -157,16 +163,44 @@ class LinkageKinematics(Kinematics):
             for b, a in dict(guess).items():
                 first[int(b)] = float(a)
             starts = np.vstack([first, starts])
+        if len(self.sliders):  # the drawing again, each slide in the middle of its stroke, then a quarter up
+            mid = np.zeros((2, n))
+            mid[:, self.nbodies:] = self.strokes.mean(axis=1)
+            mid[1, self.nbodies:] += (self.strokes[:, 1] - self.strokes[:, 0]) / 4
+            at = 1 if guess else 0
+            starts = np.vstack([starts[:at + 1], mid, starts[at + 1:]])
         starts[:, 0] = 0.0
         if not self.solved:
             return starts[0]
         th, err = newton(self.topology, starts, range(1, n), self.tol, iterations=80, damping=1e-9)
         good = np.flatnonzero(err <= self.accept)
+        inside = [g for g in good if self._in_strokes(th[g])]
+        good = np.array(inside if inside else good, dtype=int)  # a slide outside its stroke is no configuration
         if not len(good):
             raise ValueError(
                 f"the linkage does not assemble: from {len(starts)} starting configurations the loop-closure "
                 f"gap stays >= {err.min():.3g} m (check the joint points: a loop must be able to close)")
+        for g in good:  # the first start (moved off a change point) on which every slide can move: not a
+            moved = self._regular(th[g])  # degenerate component (a scissors drawn folded: its arms on top of
+            if self._slides_move(moved):  # each other turn together, its slide stuck at 0)
+                return moved
         return self._regular(th[good[0]])
+
+    def _slides_move(self, x: np.ndarray) -> bool:
+        """Whether every slide has a motion of the closure's null space at ``x`` that moves it."""
+        if not len(self.sliders) or not self.solved:
+            return True
+        jac = (self.topology.residual_and_jacobian(x)[1] * self.scale)[:, 1:]
+        _, s, vt = np.linalg.svd(jac)
+        r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
+        null = vt[r:]
+        return bool(len(null)) and bool(np.all(np.abs(null[:, self.nbodies - 1:]).max(axis=0) > 1e-6))
+
+    def _in_strokes(self, x: np.ndarray) -> bool:
+        """Whether every slide of the configuration ``x`` is within its stroke (to 1e-9 of the size)."""
+        slides = x[self.nbodies:]
+        tol = 1e-9 * self.size
+        return bool(np.all((slides >= self.strokes[:, 0] - tol) & (slides <= self.strokes[:, 1] + tol)))
 
     def _regular(self, at: np.ndarray) -> np.ndarray:
         """``at`` if the closure Jacobian has its local generic rank there; otherwise a nearby

@@ -14,10 +14,12 @@ from ...core.design import Design
 from ...core.elements import Load, Spring, G
 from ...core.validation import MAX_MAGNITUDE, MIN_POSITIVE, planar_point, positive_int
 from ...core.errors import InfeasibleDesign
+from ...core.report import MAX_CONFIGURATIONS
 from .problem import Block, columns
 from .bilinear import search
 from .solver import OBJECTIVES, Solution, column_norms, rank_of, solve
 from .verdicts import limit
+from .box import default_boxes, linkage_size
 
 __all__ = ["balance", "InfeasibleDesign", "OBJECTIVES", "free_choices"]
 
@@ -45,13 +47,14 @@ def _end(design: Design, value, what: str):
 
 
 def _size(design: Design) -> float:
-    pts = [p for j in design.joints for p in (j.point_i, j.point_j)] + [ld.point for ld in design.loads]
-    return max([abs(v) for p in pts for v in p] + [1e-3])
+    """The linkage's size (m, :func:`.box.linkage_size`), never zero."""
+    return max(linkage_size(design), 1e-300)
 
 
-def _box(box, size: float) -> tuple:
+def _box(box, design: Design) -> list:
+    """The box of each body: the default boxes (:func:`.box.default_boxes`) or the given box for all."""
     if box is None:
-        return ((-size, size), (-size, size))
+        return default_boxes(design)
     try:
         (xl, xh), (yl, yh) = box
     except (TypeError, ValueError):
@@ -59,10 +62,13 @@ def _box(box, size: float) -> tuple:
     (xl, xh), (yl, yh) = planar_point("box x-range (m)", (xl, xh)), planar_point("box y-range (m)", (yl, yh))
     if xl > xh or yl > yh:
         raise ValueError(f"box must have lo <= hi on each axis, got {box!r}")
-    return ((xl, xh), (yl, yh))
+    return [((xl, xh), (yl, yh))] * len(design.bodies)
 
 
-def _blocks(design: Design, springs, counterweights, box) -> list[Block]:
+def _blocks(design: Design, springs, counterweights, boxes) -> list[Block]:
+    """The candidates as blocks; ``boxes``: one box per body, or one box ``((x_lo, x_hi), (y_lo, y_hi))`` for all."""
+    if isinstance(boxes, tuple):
+        boxes = [boxes] * len(design.bodies)
     blocks = []
     for i, cand in enumerate(springs):
         try:
@@ -74,12 +80,13 @@ def _blocks(design: Design, springs, counterweights, box) -> list[Block]:
         if ends[0][0] == ends[1][0]:
             raise ValueError(f"springs[{i}] joins body {design.bodies[ends[0][0]]!r} to itself")
         free = 0 if ends[0][1] is None else 1 if ends[1][1] is None else None
+        box = boxes[ends[free][0] if free is not None else ends[1][0] if ends[0][1] is not None else ends[0][0]]
         blocks.append(Block("spring", ends, free, box=box))
     for i, cand in enumerate(counterweights):
         body, point = _end(design, cand, f"counterweights[{i}]")
         if body == 0:
             raise ValueError(f"counterweights[{i}] is on the ground, where it cannot balance anything")
-        blocks.append(Block("mass", [(body, point)], None if point is not None else 0, box=box))
+        blocks.append(Block("mass", [(body, point)], None if point is not None else 0, box=boxes[body]))
     if not blocks:
         raise ValueError("give at least one candidate spring or counterweight")
     return blocks
@@ -189,21 +196,30 @@ def _threads(p_size: int):
     return _CONTROLLER.limit(limits=1)
 
 
+def _any_free(springs, counterweights) -> bool:
+    """Whether a (checked) candidate leaves a point to the solver."""
+    return any(end[1] is None for c in springs for end in c) or any(c[1] is None for c in counterweights)
+
+
 def _solve_growing(design, springs, counterweights, box, q, objective):
     """Solve with the given box; with the default box, grow it (as the verdict suggests, at most
     three times, up to 1000 times the linkage's size) while a point outside it would balance."""
-    size = _size(design)
-    current = _box(box, size)
+    current, total = _box(box, design), 1.0
+    if box is None and linkage_size(design) == 0 and _any_free(springs, counterweights):
+        raise ValueError(f"{design.name}: every joint, load and spring end sits at one point: there is no size to "
+                         "draw a default box from; pass box=((x_lo, x_hi), (y_lo, y_hi)) in metres")
     for attempt in range(4):
         blocks = _blocks(design, springs, counterweights, current)
         try:
             p, sol = _solve_alternating(design, blocks, q, objective)
             return p, sol, current
         except InfeasibleDesign as err:
-            grow = getattr(err, "verdict", None) == "box" and box is None and attempt < 3
-            if not grow or err.box[0][1] > 1000 * size or err.box[0][1] <= current[0][1]:
+            factor = getattr(err, "factor", None)
+            grow = getattr(err, "verdict", None) == "box" and box is None and attempt < 3 and factor is not None
+            if not grow or factor is None or factor <= 1.0 or total * factor > 1000:
                 raise
-            current = err.box
+            total *= factor
+            current = default_boxes(design, total)
 
 
 def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (), objective: str = "min_preload",
@@ -225,14 +241,21 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
         energy (Singh's minimum preload: the constant total energy as low as it goes), the
         smallest total stiffness (N/m), or the smallest total counter mass (kg). Ties: an
         objective ignores the candidates it does not count (counterweights for the stiffness,
-        springs for the mass); when other designs reach the same value a UserWarning says so,
+        springs for the mass; the minimum preload's counterweights are made the lightest among
+        the designs of least preload, with fixed spring ends); when other designs reach the same value a UserWarning says so,
         and the design returned is simply the linear program's optimal vertex (HiGHS), picked
         by no further rule.
     box : ((x_lo, x_hi), (y_lo, y_hi)), optional
-        Where free points may go, in their bodies' local frames (m); by default a square
-        of half-width the linkage's largest joint or load coordinate.
+        Where free points may go, in their bodies' local frames (m). By default each body
+        gets its own square, centred on the body's proximal joint point (its end of the joint
+        that first reaches it from the ground; for the ground, its first joint) and of
+        half-width the linkage's size (the largest distance of a joint, load or spring end point
+        from its body's centre): it moves and scales with the drawing, wherever and however
+        large it is drawn (:mod:`.box`). When a point outside it would balance, the default
+        boxes grow about their centres (up to 1000 times) before ``balance`` gives up.
     n : int, optional
-        Number of sampled configurations (default: enough for the unknowns, at least 240).
+        Number of sampled configurations, ``20..MAX_CONFIGURATIONS`` (200 000; default: enough
+        for the unknowns, at least 240).
 
     Returns
     -------
@@ -266,20 +289,20 @@ def balance(design: Design, springs: Sequence = (), counterweights: Sequence = (
         raise TypeError(f"design must be a balancelab Design, got {type(design).__name__}")
     if objective not in OBJECTIVES:
         raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
-    _blocks(design, list(springs), list(counterweights), _box(box, _size(design)))  # check the input first
-    m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20)
+    _blocks(design, list(springs), list(counterweights), _box(box, design))  # check the input first
+    m = 240 if n is None else positive_int("n (number of configurations)", n, minimum=20, maximum=MAX_CONFIGURATIONS)
     q = design.sample(max(m, 6 * 3 * (len(springs) + len(counterweights))) if n is None else m, seed=0)
     vl, vs = design.element_energies(q)
     if not (np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) > 0:
         raise ValueError(f"{design.name}: nothing to balance: its loads and springs exchange no energy as it "
                          "moves (keep at least one load, or the spring that loads a spring-loaded mechanism)")
     with _threads(len(q) * 9 * (len(springs) + len(counterweights))):
-        p, sol, used = _solve_growing(design, list(springs), list(counterweights), box, q, objective)
+        p, sol, _ = _solve_growing(design, list(springs), list(counterweights), box, q, objective)
     new_springs, new_loads, params, active = _elements(design, p.blocks, sol.x)
     params.update(conditions_rank=int(sol.rank), free_choices=int(sol.free_choices), active_bounds=len(active),
                   **active)
-    if any(b.free is not None for b in p.blocks):
-        (xl, xh), (yl, yh) = used
+    if any(b.free is not None for b in p.blocks):  # the box of the first free point (all alike but a far drawing's)
+        (xl, xh), (yl, yh) = next(b.box for b in p.blocks if b.free is not None)
         params.update(box_x_lo=xl, box_x_hi=xh, box_y_lo=yl, box_y_hi=yh)
     if sol.unique is False:
         ignored = sorted({"springs" if b.kind == "spring" else "counterweights" for b in p.blocks
@@ -333,8 +356,9 @@ def free_choices(design: Design, springs: Sequence = (), counterweights: Sequenc
     >>> s.nvar, s.rank, s.free_choices
     (3, 2, 1)
     """
-    blocks = _blocks(design, list(springs), list(counterweights), _box(None, _size(design)))
-    q = design.sample(240 if n is None else positive_int("n", n, minimum=20), seed=0)
+    blocks = _blocks(design, list(springs), list(counterweights), _box(None, design))
+    q = design.sample(240 if n is None else positive_int("n (number of configurations)", n, minimum=20,
+                                                         maximum=MAX_CONFIGURATIONS), seed=0)
     p = columns(design, blocks, q)
     r = rank_of(p.A / column_norms(p))[0]
     x = np.linalg.lstsq(p.A, -p.v, rcond=1e-12)[0]

@@ -28,6 +28,7 @@ from ...core.elements import G
 from ...core.frames import turn_back
 from ...core.kinematics import body_to_world
 from ...core.report import balanced_at, reference_point
+from .box import linkage_size
 
 __all__ = ["Block", "Problem", "columns", "harmonics", "lp_constraints"]
 
@@ -61,6 +62,7 @@ class Problem:
     poses: np.ndarray
     load_spread: float
     design: object = None
+    size: float = 0.0  # the linkage's size (m, :func:`.box.linkage_size`): the scale of the wider boxes tried
 
     @property
     def nvar(self) -> int:
@@ -154,7 +156,7 @@ def columns(design, blocks, q) -> Problem:
     spread = float(np.ptp(vl, axis=0).sum() + np.ptp(vs, axis=0).sum()) if (vl.size or vs.size) else 0.0
     if np.ptp(v) <= 1e-6 * spread and balanced_at(design, q):
         v = np.zeros_like(v)  # balanced already by its report's own yardstick: what is left is round-off, no term to cancel
-    return Problem(A - A.mean(0), v - v.mean(), np.array(mean), blocks, q, poses, spread, design)
+    return Problem(A - A.mean(0), v - v.mean(), np.array(mean), blocks, q, poses, spread, design, linkage_size(design))
 
 
 def harmonics(design, poses, residual, top: int = 4, q=None) -> list[tuple[str, float]]:

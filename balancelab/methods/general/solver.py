@@ -213,7 +213,7 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
 
     D = column_norms(p)
     r, U, s, Vt = rank_of(p.A / D)
-    sigma = max(np.linalg.norm(p.v), 1e-300)
+    sigma = _scale(p)
     eq = (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma)
     S = sigma / D  # x = S y
     bounds, A_ub, b_ub = lp_constraints(p, S)
@@ -223,6 +223,9 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
     lp = linprog(start * S, A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     if lp.status != 0:
         raise infeasible(p, D, objective)
+    face = (c * S, A_ub, b_ub)  # the objective and inequalities whose optimal face _unique explores
+    if objective == "min_preload" and not convex and any(b.kind == "mass" for b in p.blocks):
+        lp, face = _lightest(p, lp, c * S, S, A_ub, b_ub, eq, bounds)
     tries = [_preload(p, S, c, lp.x, eq, (A_ub, b_ub), bounds, Vt[r:].T, maxiter), lp.x] if convex else [lp.x]
     tol = 1e-10 * max(p.load_spread, 1e-300)
     for y in tries:  # the convex step from the LP's answer, else the LP's (feasible) answer itself
@@ -235,8 +238,33 @@ def solve(p: Problem, objective: str, maxiter: int = 500) -> Solution:
         raise infeasible(p, D, objective, f"; the best solution leaves {spread:.3g} J")
     sol = Solution(x, r, p.nvar, spread)
     if not convex and r < p.nvar:
-        sol.unique = _unique(p, c * S, lp, A_ub, b_ub, eq, bounds)
+        sol.unique = _unique(p, face[0], lp, face[1], face[2], eq, bounds)
     return sol
+
+
+def _lightest(p: Problem, lp, cost: np.ndarray, S: np.ndarray, A_ub, b_ub, eq, bounds):
+    """The minimum preload's counterweights, which its objective does not count, made the lightest
+    among the designs of that preload (a second linear program, on the scaled variables): the
+    design is then no arbitrary vertex, and the default objective owes no warning. Returns the
+    second program's answer and its face ``(mass cost, inequalities with the preload's bound)``."""
+    from scipy.optimize import linprog
+
+    mass = _cost(p, "min_mass") * S
+    slack = 1e-9 * max(abs(lp.fun), 1e-300) + 1e-12 * float(np.abs(cost) @ np.abs(lp.x))
+    rows = np.vstack([A_ub, cost]) if A_ub is not None else cost[None]
+    lims = np.append(b_ub, lp.fun + slack) if b_ub is not None else np.array([lp.fun + slack])
+    second = linprog(mass, A_ub=rows, b_ub=lims, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
+    if second.status != 0:
+        return lp, (cost, A_ub, b_ub)
+    return second, (mass, rows, lims)
+
+
+def _scale(p: Problem) -> float:
+    """The energy (J) the variables are scaled by: that of what the design carries, or, for a design
+    balanced already (``v`` is then exactly zero), the spreads of its elements' energies (a scale of
+    1e-300 would make the scaled rates 0 / 0)."""
+    norm = float(np.linalg.norm(p.v))
+    return norm if norm > 0 else max(p.load_spread * np.sqrt(max(len(p.v), 1)), 1e-300)
 
 
 def _unique(p: Problem, cost: np.ndarray, lp, A_ub, b_ub, eq, bounds) -> bool:

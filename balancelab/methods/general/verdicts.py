@@ -19,7 +19,7 @@ The verdict is stored on the exception (``err.verdict``). Layer: methods.
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 
@@ -28,7 +28,7 @@ from ...core.report import BALANCE_TOLERANCE, q_units, roundoff_allowance as all
 from ...core.smooth import smooth_split
 from .problem import Problem, harmonics, lp_constraints
 
-__all__ = ["VERDICTS", "infeasible", "nice_box", "limit", "smooth_within"]
+__all__ = ["VERDICTS", "infeasible", "nice_box", "suggest", "limit", "smooth_within"]
 
 #: the reasons a balance problem has no admissible solution (``"limit"``: a rate or mass beyond
 #: what a design may hold, see :func:`limit`)
@@ -138,20 +138,23 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
     found = _wider(p, D) if any(b.free in (0, 1) for b in p.blocks) else None
     if found is not None:
         x, far = found
-        outside = []
+        outside, points = [], []
         for i, b in enumerate(p.blocks):
             k = x[b.cols[0]]
             if b.free not in (0, 1) or k <= 0:
                 continue
             pt = x[b.cols[1:]] / k
+            points.append(pt)
             (xl, xh), (yl, yh) = b.box
             if not (xl <= pt[0] <= xh and yl <= pt[1] <= yh):
                 end = "counterweight" if b.kind == "mass" else f"end {b.free}"
                 outside.append(f"{label(p, i)} {end} at ({pt[0]:.4g}, {pt[1]:.4g}) m")
-        box = nice_box(far)
+        box = suggest(p.blocks[0].box, points)
         where = ", ".join(outside) or "the free points at the box's edge"
-        return _error("box", head + f"needs a point outside the box {p.blocks[0].box}: {where}; "
-                      f"box={box} would do", box)
+        err = _error("box", head + f"needs a point outside the box {p.blocks[0].box}: {where}; "
+                     f"box={box} would do", box)
+        err.factor = far / max(_half(p), 1e-300)  # type: ignore[attr-defined]  # how far the default boxes must grow
+        return err
     signed = _signed(p, D, lo)
     big = max(np.abs(free).max(), 1e-300)
     need = [label(p, i) for i, b in enumerate(p.blocks) if free[b.cols[0]] < -1e-9 * big]
@@ -171,17 +174,26 @@ def infeasible(p: Problem, D: np.ndarray, objective: str, detail: str = "") -> I
 WIDER = 1000.0
 
 
+def _half(p: Problem) -> float:
+    """The largest half-width (m) of the candidates' boxes."""
+    return max([(hi - lo) / 2 for b in p.blocks for lo, hi in b.box] + [0.0])
+
+
 def _wider(p: Problem, D: np.ndarray):
     """A balanced solution with rates and masses >= 0 and free points in the smallest square about
-    the bodies' origins, of half-width 2, 4, ... times the given box's largest bound up to :data:`WIDER`
-    times, that has one: ``(x, half-width)``, or None."""
+    each box's centre, of half-width 2, 4, ... up to :data:`WIDER` times the larger of the boxes'
+    half-width and the linkage's size (``p.size``; a box far smaller than the linkage is no yardstick),
+    that has one: ``(x, half-width)``, or None."""
     U, s, Vt = np.linalg.svd(p.A / D, full_matrices=False)
     r = int((s > 1e-9 * max(s.max(initial=0.0), 1e-300)).sum())
     sigma = max(float(np.linalg.norm(p.v)), 1e-300)
-    base = max([np.abs(b.box).max() for b in p.blocks] + [1e-12])
+    base = max(_half(p), p.size, 1e-300)
+    eq = (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma)
+    if _in_square(p, D, WIDER * base, eq, sigma) is None:  # none even at the widest: no need to grow
+        return None
     factor = 2.0
     while factor <= WIDER * 1.0001:
-        x = _in_square(p, D, factor * base, (Vt[:r], -(U[:, :r].T @ p.v) / s[:r] / sigma), sigma)
+        x = _in_square(p, D, factor * base, eq, sigma)
         if x is not None:
             return x, factor * base
         factor *= 2.0 if factor < WIDER / 2 else WIDER / factor if factor < WIDER else 2.0
@@ -194,7 +206,9 @@ def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
     boxes = [b.box for b in p.blocks]
     try:
         for b in p.blocks:
-            b.box = ((-w, w), (-w, w))
+            (xl, xh), (yl, yh) = b.box
+            cx, cy = (xl + xh) / 2, (yl + yh) / 2
+            b.box = ((cx - w, cx + w), (cy - w, cy + w))
         S = sigma / D
         bounds, A_ub, b_ub = lp_constraints(p, S)
     finally:
@@ -202,6 +216,27 @@ def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
             b.box = box
     lp = linprog(np.zeros(p.nvar), A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     return lp.x * S if lp.status == 0 else None
+
+
+def suggest(box: tuple, points: Sequence[np.ndarray]) -> tuple:
+    """The box ``box`` widened to hold ``points`` (with a margin of a tenth of its new size), its
+    bounds rounded outwards to two significant digits of that size.
+
+    Examples
+    --------
+    >>> suggest(((-1.0, 1.0), (-1.0, 0.19)), [np.array([0.0, 0.1962])])
+    ((-1.0, 1.0), (-1.0, 0.4))
+    """
+    out = []
+    for axis, (lo, hi) in enumerate(box):
+        vals = [lo, hi] + [float(pt[axis]) for pt in points]
+        lo2, hi2 = min(vals), max(vals)
+        margin = 0.1 * max(hi2 - lo2, abs(lo2), abs(hi2), 1e-300)
+        lo2, hi2 = min(lo, lo2 - margin) if lo2 < lo else lo, max(hi, hi2 + margin) if hi2 > hi else hi
+        step = 10.0 ** np.floor(np.log10(max(hi2 - lo2, 1e-300))) / 10
+        out.append((float(lo) if lo2 == lo else float(np.floor(lo2 / step) * step),
+                    float(hi) if hi2 == hi else float(np.ceil(hi2 / step) * step)))
+    return tuple(out)
 
 
 def limit(name: str, what: str, value: float, unit: str, bound: float, above: bool) -> InfeasibleDesign:

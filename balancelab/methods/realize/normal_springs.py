@@ -213,7 +213,7 @@ def balance_normal(design: Design, springs: Sequence[Any] = (), counterweights: 
     >>> import balancelab as bl
     >>> arm = bl.Linkage("arm")
     >>> arm.revolute("ground", (0.0, 0.0), "link", (0.0, 0.0))
-    >>> arm.mass("link", 1.5, at=(0.4, 0.0))
+    >>> arm.mass("link", 1.5, com=(0.4, 0.0))
     >>> d = balance_normal(arm.build(), springs=[(("ground", (0.0, 0.25)), ("link", (0.15, 0.0)))],
     ...                    free_length=0.06)
     >>> d.springs[0].free_length, d.balance_report().balanced
