@@ -545,8 +545,9 @@ async () => {
 #: What a reader of every page must be able to see, evaluated after the page has loaded (every
 #: solution and dropdown opened first): each img, svg and formula inside the strip its scroll
 #: container lets the reader reach (the window when it has none); no TeX, $…$ or literal \\n in
-#: the text outside code and maths; every matplotlib figure checked for clashing texts when it was
-#: made (balancelab.viz.style.text_clashes) and clean; unique element ids.
+#: the text outside code and maths, and no Markdown table row printed as text; every matplotlib
+#: figure checked for clashing texts when it was made (balancelab.viz.style.text_clashes) and
+#: clean; unique element ids.
 READER_CHECKS = """
 async () => {
   // open every solution and dropdown first: what is cut inside them is cut for the reader too
@@ -592,9 +593,14 @@ async () => {
     n.parentElement.closest("pre, code, script, style, mjx-container, .math, .highlight, .MathJax_Preview, .cell_input, textarea, mjx-assistive-mml")
       ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT});
   const tex = /\\\\(?:[a-zA-Z]{2,}|[()\\[\\]])|\\$[^$\\s][^$]*\\$|\\\\n\\b/;
+  // a Markdown table printed as text: a line "| a | b |" or "|---|---|" (a cell's Markdown output
+  // that was never made a table)
+  const row = /^[ \\t]*\\|(?:[^|\\n]*\\|){2,}[ \\t]*$/m;
   for (let n = walker.nextNode(); n; n = walker.nextNode()) {
     const m = n.textContent.match(tex);
     if (m) raw.push(n.textContent.trim().slice(Math.max(0, m.index - 30), m.index + 50));
+    const t = n.textContent.match(row);
+    if (t) raw.push("a Markdown table row as text: " + t[0].trim().slice(0, 80));
   }
   // matplotlib text boxes (checked when the figure was made, see balancelab.viz.style.text_clashes)
   const figures = Array.from(main.querySelectorAll(".bl-figure"));
