@@ -117,15 +117,17 @@ def offline_page(page: str) -> str:
     return page
 
 
-def _accessible(page: str, alt: str, labels: list[str]) -> str:
-    """matplotlib's player HTML with a named slider, spoken frame labels and a phone-width layout."""
+def _accessible(page: str, alt: str, labels: list[str], size: tuple[int, int] | None = None) -> str:
+    """matplotlib's player HTML with a named slider, spoken frame labels and a phone-width layout;
+    its frames shown at ``size`` (CSS px) when given (frames drawn for high-density screens)."""
     m = re.search(r'id="_anim_slider(\w+)"', page)
     if m is None:
         raise ValueError("not a matplotlib JavaScript player: its frame slider is missing")
     uid = m.group(1)
     first = f"frame 1 of {len(labels)}" + (f": {labels[0]}" if labels and labels[0] else "")
     page = page.replace('<div class="animation">', '<div class="animation bl-player">', 1)
-    page = page.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" id=', 1)
+    shown = f'width="{size[0]}" height="{size[1]}" ' if size else ""
+    page = page.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" {shown}id=', 1)
     page = page.replace(f'<input id="_anim_slider{uid}"',
                         f'<input aria-label="Frame" aria-valuetext="{escape(first, quote=True)}" '
                         f'id="_anim_slider{uid}"', 1)
@@ -215,7 +217,9 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
     if default_mode not in ("loop", "once", "reflect"):
         raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
     html = offline_page(anim.to_jshtml(default_mode=default_mode))
+    # balancelab's animations draw their frames at pixel_ratio times the size they are shown at
+    size = getattr(anim, "shown_size", None) if getattr(anim, "pixel_ratio", 1) != 1 else None
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
     fig = getattr(anim, "figure", None)      # balancelab's animations name their figure
     plt.close(fig if fig is not None else anim._fig)  # type: ignore[attr-defined]  # any other matplotlib animation: its only name
-    return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames)), frames)
+    return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames), size), frames)
