@@ -12,6 +12,8 @@ of HTML that plays with no kernel and no network. On top of matplotlib's JavaScr
 * fits a phone's column: the slider and the row of buttons shrink with the page (390 px wide
   screens) instead of sticking out;
 * never starts by itself, and has no transitions for readers who ask for reduced motion.
+* shows the frames of balancelab's animations (drawn with ``pixel_ratio`` device pixels per CSS
+  pixel) at the figure's own size: sharp on high-density screens.
 
 The text alternative of the frames (the image's ``alt``) says what the animation shows; by
 default it is the finding :func:`~balancelab.viz.animate` computes from the design's numbers
