@@ -11,7 +11,7 @@ of HTML that plays with no kernel and no network. On top of matplotlib's JavaScr
   region that stays quiet while the animation plays);
 * fits a phone's column: the slider and the row of buttons shrink with the page (390 px wide
   screens) instead of sticking out;
-* never starts by itself, and has no transitions for readers who ask for reduced motion.
+* never starts by itself, and has no transitions for readers who ask for reduced motion;
 * shows the frames of balancelab's animations (drawn with ``pixel_ratio`` device pixels per CSS
   pixel) at the figure's own size: sharp on high-density screens.
 
