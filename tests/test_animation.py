@@ -346,3 +346,19 @@ def test_an_animation_knows_its_frames_and_is_dropped_without_a_warning():
         unrendered = bl.animate(bl.catalog()["lacoste_lever"](), frames=3)
         del unrendered
         gc.collect()
+
+
+def test_the_player_draws_any_matplotlib_animation_for_high_density_screens():
+    """A plain FuncAnimation (a chapter's own figure): frames saved at twice the figure's dpi,
+    shown at the figure's size."""
+    from matplotlib.animation import FuncAnimation
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(4.4, 3.0), dpi=120)
+    (line,) = fig.subplots().plot([0, 1], [0, 1])
+    anim = FuncAnimation(fig, lambda i: line.set_ydata([0, i]), frames=3)
+    page = bl.viz.player(anim, "a line turning").html
+    assert re.search(r'<img alt="a line turning" width="528" height="360" id="_anim_img', page)
+    data = re.search(r'frames\[0\] = "data:image/png;base64,([^"]*)"', page).group(1)
+    im = Image.open(io.BytesIO(base64.b64decode(data.replace("\\\n", ""))))
+    assert im.size == (1056, 720) and round(im.info["dpi"][0]) == 240

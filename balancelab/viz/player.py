@@ -204,8 +204,11 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
     >>> p, 'alt="a lever turning"' in p.html, 'aria-label="Frame"' in p.html
     (<animation player, 4 frames>, True, True)
     """
+    import matplotlib
     import matplotlib.pyplot as plt
     from matplotlib.animation import Animation
+
+    from .style import PIXEL_RATIO
 
     if not isinstance(anim, Animation):
         raise TypeError(f"anim must be a matplotlib Animation (from animate), got {type(anim).__name__}")
@@ -218,9 +221,18 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
         raise ValueError("alt must describe the animation in words (a non-empty string)")
     if default_mode not in ("loop", "once", "reflect"):
         raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
-    html = offline_page(anim.to_jshtml(default_mode=default_mode))
-    # balancelab's animations draw their frames at pixel_ratio times the size they are shown at
-    size = getattr(anim, "shown_size", None) if getattr(anim, "pixel_ratio", 1) != 1 else None
+    ratio = getattr(anim, "pixel_ratio", None)
+    if ratio is not None:
+        # balancelab's animations draw their frames at pixel_ratio times the size they are shown at
+        html = offline_page(anim.to_jshtml(default_mode=default_mode))
+        size = getattr(anim, "shown_size", None) if ratio != 1 else None
+    else:
+        # any other matplotlib animation: its frames saved at PIXEL_RATIO times its figure's dpi
+        own = anim._fig  # type: ignore[attr-defined]  # matplotlib's only name for the figure
+        with matplotlib.rc_context({"savefig.dpi": own.dpi * PIXEL_RATIO}):
+            html = offline_page(anim.to_jshtml(default_mode=default_mode))
+        w, h = own.get_size_inches() * own.dpi
+        size = (int(round(w)), int(round(h)))
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
     fig = getattr(anim, "figure", None)      # balancelab's animations name their figure
     plt.close(fig if fig is not None else anim._fig)  # type: ignore[attr-defined]  # any other matplotlib animation: its only name
