@@ -119,6 +119,30 @@ def offline_page(page: str) -> str:
     return page
 
 
+#: One frame of matplotlib's player saved as a PNG (its base64 text split by backslash-newlines).
+_PNG_FRAME = re.compile(r'(frames\[\d+\] = ")data:image/png;base64,([^"]*)"')
+
+
+def _compact_frames(page: str, dpi: float) -> str:
+    """matplotlib's PNG frames of a player as the house style's lossless WebP (line art: a few
+    times smaller than the full-colour PNGs), ``dpi`` recorded in each."""
+    import base64
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    from .style import webp_image
+
+    def one(m: re.Match) -> str:
+        png = base64.b64decode(m.group(2).replace("\\\n", "").replace("\n", ""))
+        rgb = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))
+        data = base64.encodebytes(webp_image(rgb, dpi)).decode("ascii").replace("\n", "\\\n")
+        return f'{m.group(1)}data:image/webp;base64,{data}"'
+
+    return _PNG_FRAME.sub(one, page)
+
+
 def _accessible(page: str, alt: str, labels: list[str], size: tuple[int, int] | None = None) -> str:
     """matplotlib's player HTML with a named slider, spoken frame labels and a phone-width layout;
     its frames shown at ``size`` (CSS px) when given (frames drawn for high-density screens)."""
@@ -231,6 +255,7 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
         own = anim._fig  # type: ignore[attr-defined]  # matplotlib's only name for the figure
         with matplotlib.rc_context({"savefig.dpi": own.dpi * PIXEL_RATIO}):
             html = offline_page(anim.to_jshtml(default_mode=default_mode))
+        html = _compact_frames(html, own.dpi * PIXEL_RATIO)
         w, h = own.get_size_inches() * own.dpi
         size = (int(round(w)), int(round(h)))
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))

@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 
 __all__ = ["DPI", "FONT", "MIN_FONT_PT", "MIN_FONT_PX", "MIN_SCALE", "PIXEL_RATIO", "RC", "arrange_labels",
-           "figure_html", "fit_title", "install", "panel_columns", "text_clashes", "use"]
+           "figure_html", "fit_title", "install", "panel_columns", "text_clashes", "use", "webp_image"]
 
 #: Resolution (dots per inch) of every figure and animation frame of the course.
 DPI = 120
@@ -267,10 +267,29 @@ def panel_columns(fig, renderer=None) -> list[tuple[float, float]]:
     return list(zip(cuts[:-1], cuts[1:]))
 
 
-def _image(rgba: np.ndarray, dpi: float) -> bytes:
-    """A lossless WebP of ``rgba``, its resolution ``dpi`` in its EXIF: a 256-colour palette when
-    that is smaller (line art), else RGB. (A lossless WebP of line art is about a quarter smaller
-    than the same pixels as an optimized PNG.)"""
+def webp_image(rgba: np.ndarray, dpi: float) -> bytes:
+    """Pixels as a lossless WebP, its resolution in its EXIF: a 256-colour palette when that is
+    smaller (line art), else RGB. (A lossless WebP of line art is about a quarter smaller than
+    the same pixels as an optimized PNG.) The encoder of every figure of the course.
+
+    Parameters
+    ----------
+    rgba : numpy.ndarray
+        Pixels, shape (h, w, 3) or (h, w, 4) (alpha ignored), uint8.
+    dpi : float
+        Resolution recorded in the image (dots per inch).
+
+    Returns
+    -------
+    bytes
+
+    Examples
+    --------
+    >>> import io; from PIL import Image
+    >>> im = Image.open(io.BytesIO(webp_image(np.full((4, 6, 3), 255, np.uint8), 240)))
+    >>> im.format, im.size, im.getexif()[0x011A]
+    ('WEBP', (6, 4), 240.0)
+    """
     from PIL import Image
 
     im = Image.fromarray(np.ascontiguousarray(rgba[..., :3]))
@@ -459,7 +478,7 @@ def figure_html(fig, dpi: float = DPI) -> str:
     imgs = []
     for (x0, x1), axes in zip(columns, groups):
         part = _crop(rgba[:, int(round(x0)):int(round(x1))], background)
-        data = base64.b64encode(_image(part, dpi * PIXEL_RATIO)).decode("ascii")
+        data = base64.b64encode(webp_image(part, dpi * PIXEL_RATIO)).decode("ascii")
         w, h = part.shape[1] / PIXEL_RATIO, part.shape[0] / PIXEL_RATIO
         imgs.append(f'<img src="data:image/webp;base64,{data}" width="{w:.0f}" height="{h:.0f}" '
                     f'alt="{html.escape(_alt(fig, axes))}" class="bl-panel" '
