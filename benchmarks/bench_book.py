@@ -5,7 +5,8 @@ Rows (name, value, unit, target):
 * cold full build, every notebook executed (no cache, fresh environment): < 5 min;
 * cached rebuild after touching one chapter: < 30 s;
 * slowest chapter (execution time from the jupyter-cache records): for information;
-* total size of the site, the course PDF included: < 15 MB;
+* total size of the site, the course PDF included: < 15 MB, and the size of each of its parts
+  (chapter pages, animation frames, PDF, MathJax, theme ...: :func:`site_parts`);
 * weight of the heaviest page: its HTML plus the images it shows: < 3 MB;
 * the scripts, style sheets and fonts every page loads (downloaded once, then cached by the
   browser; MathJax's on-demand parts aside): for information;
@@ -181,9 +182,31 @@ def weight_rows(site: Path = SITE) -> list[tuple[str, float, str, str]]:
         if "bytes" in printed:
             rows.append(("book: course PDF as Chromium printed it", printed["printed_bytes"] / 1e6, "MB", "info"))
             rows.append(("book: course PDF as shipped", printed["bytes"] / 1e6, "MB", "info"))
+    for part, size in site_parts(site).items():
+        rows.append((f"book: site part {part}", size / 1e6, "MB", "info"))
     total = sum(p.stat().st_size for p in site.rglob("*") if p.is_file()) / 1e6
     rows.append(("book: total site size (with the course PDF)", total, "MB", "< 15 MB"))
     return rows
+
+
+#: The parts of the site whose sizes the table lists (where the total goes): a name, the start of
+#: the path and its end; the first that fits a file counts it.
+PARTS = (("chapter pages (their inline figures and first frames)", "book/", ".html"),
+         ("animation frames after the first", "_images/frames/", ""),
+         ("course PDF", "", ".pdf"), ("MathJax", "vendor/mathjax/", ""), ("widget manager", "vendor/", ""),
+         ("theme (scripts, styles, fonts)", "_static/", ""), ("reader notebooks", "_sources/", ""))
+
+
+def site_parts(site: Path = SITE) -> dict:
+    """Bytes of each part of the site (:data:`PARTS`, then "everything else")."""
+    sizes = dict.fromkeys([name for name, _, _ in PARTS] + ["everything else"], 0)
+    for path in site.rglob("*"):
+        if path.is_file():
+            rel = path.relative_to(site).as_posix()
+            part = next((name for name, start, end in PARTS if rel.startswith(start) and rel.endswith(end)),
+                        "everything else")
+            sizes[part] += path.stat().st_size
+    return sizes
 
 
 def run() -> list[tuple[str, float, str, str]]:

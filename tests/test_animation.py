@@ -18,7 +18,7 @@ import balancelab as bl  # noqa: E402
 from balancelab.viz.animation import animate, animate_parameter, configuration_path  # noqa: E402
 from test_plotting import ALL, build, two_link_arm  # noqa: E402
 
-FRAME_RE = re.compile(r'frames\[(\d+)\] = "data:image/png;base64,([^"]*)"')
+FRAME_RE = re.compile(r'frames\[(\d+)\] = "data:image/webp;base64,([^"]*)"')
 
 
 def _frames(html: str) -> list[bytes]:
@@ -53,10 +53,24 @@ def test_the_embedded_player_is_offline_smooth_and_ends_where_the_path_ends(name
     assert 1000.0 / float(interval) >= 20
     assert "http://" not in html and "https://" not in html
     assert 'class="fa' not in html
-    # the last embedded frame is the picture of the path's end
+    # the last embedded frame is the picture of the path's end, drawn with two device pixels per
+    # CSS pixel of the figure (sharp on a high-density screen), its resolution recorded
     im = Image.open(io.BytesIO(frames[-1]))
-    assert im.size == anim._fig.canvas.get_width_height()
+    w, h = anim._fig.canvas.get_width_height()
+    assert im.format == "WEBP" and im.size == (2 * w, 2 * h) == tuple(2 * s for s in anim.shown_size)
+    assert im.getexif()[0x011A] == 2 * anim._fig.dpi
     np.testing.assert_allclose(anim.drawing.q, anim.path[-1])
+    # the figure itself is left at its own resolution
+    assert anim.frame_image(0).shape == (h, w, 3)
+
+
+def test_the_player_shows_its_frames_at_half_their_pixels():
+    anim = animate(build("lacoste_lever"), frames=3)
+    w, h = anim.shown_size
+    page = bl.viz.player(anim, "a lever turning").html
+    assert re.search(rf'<img alt="a lever turning" width="{w}" height="{h}" id="_anim_img', page)
+    (first,) = _frames(page)[:1]
+    assert Image.open(io.BytesIO(first)).size == (2 * w, 2 * h)
 
 
 def test_frame_count_and_path_of_a_full_turn():
@@ -332,3 +346,21 @@ def test_an_animation_knows_its_frames_and_is_dropped_without_a_warning():
         unrendered = bl.animate(bl.catalog()["lacoste_lever"](), frames=3)
         del unrendered
         gc.collect()
+
+
+def test_the_player_draws_any_matplotlib_animation_for_high_density_screens():
+    """A plain FuncAnimation (a chapter's own figure): frames saved at twice the figure's dpi,
+    shown at the figure's size."""
+    from matplotlib.animation import FuncAnimation
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(4.4, 3.0), dpi=120)
+    (line,) = fig.subplots().plot([0, 1], [0, 1])
+    anim = FuncAnimation(fig, lambda i: line.set_ydata([0, i]), frames=3)
+    page = bl.viz.player(anim, "a line turning").html
+    assert re.search(r'<img alt="a line turning" width="528" height="360" id="_anim_img', page)
+    # stored as the figures are: lossless WebP, the dpi in its EXIF
+    (first, *_) = _frames(page)
+    im = Image.open(io.BytesIO(first))
+    assert im.size == (1056, 720) and round(im.getexif()[0x011A]) == 240
+    assert len(_frames(page)) == 3

@@ -528,10 +528,11 @@ async () => {
   const stderr = Array.from(main.querySelectorAll(".output.stderr, .stderr")).map(e => e.textContent.slice(0, 80));
   const warned = Array.from(main.querySelectorAll(".cell_output"))
     .map(e => e.textContent).filter(t => /(Warning|Traceback \\(most recent)/.test(t)).map(t => t.slice(0, 80));
-  // every figure and animation frame: natural and rendered width, and the start of its PNG (its dpi)
+  // every figure and animation frame: natural and rendered width, and its image (its dpi: a
+  // WebP keeps it in an EXIF chunk after the pixels)
   const pictures = Array.from(main.querySelectorAll(".cell_output img, div.animation img, .bl-figure img"))
     .filter(i => i.naturalWidth >= 150)
-    .map(i => ({src: i.src.startsWith("data:") ? i.src.slice(0, 4022) : i.src, natural: i.naturalWidth,
+    .map(i => ({src: i.src, natural: i.naturalWidth,
                 shown: i.getBoundingClientRect().width}));
   const article = document.querySelector("article.bd-article") || main;
   return {maths: maths.length, unrendered, errors, raw, broken, noalt, heads, figures, links, stderr, warned,
@@ -545,8 +546,9 @@ async () => {
 #: What a reader of every page must be able to see, evaluated after the page has loaded (every
 #: solution and dropdown opened first): each img, svg and formula inside the strip its scroll
 #: container lets the reader reach (the window when it has none); no TeX, $…$ or literal \\n in
-#: the text outside code and maths; every matplotlib figure checked for clashing texts when it was
-#: made (balancelab.viz.style.text_clashes) and clean; unique element ids.
+#: the text outside code and maths, and no Markdown table row printed as text; every matplotlib
+#: figure checked for clashing texts when it was made (balancelab.viz.style.text_clashes) and
+#: clean; unique element ids.
 READER_CHECKS = """
 async () => {
   // open every solution and dropdown first: what is cut inside them is cut for the reader too
@@ -592,9 +594,14 @@ async () => {
     n.parentElement.closest("pre, code, script, style, mjx-container, .math, .highlight, .MathJax_Preview, .cell_input, textarea, mjx-assistive-mml")
       ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT});
   const tex = /\\\\(?:[a-zA-Z]{2,}|[()\\[\\]])|\\$[^$\\s][^$]*\\$|\\\\n\\b/;
+  // a Markdown table printed as text: a line "| a | b |" or "|---|---|" (a cell's Markdown output
+  // that was never made a table)
+  const row = /^[ \\t]*\\|(?:[^|\\n]*\\|){2,}[ \\t]*$/m;
   for (let n = walker.nextNode(); n; n = walker.nextNode()) {
     const m = n.textContent.match(tex);
     if (m) raw.push(n.textContent.trim().slice(Math.max(0, m.index - 30), m.index + 50));
+    const t = n.textContent.match(row);
+    if (t) raw.push("a Markdown table row as text: " + t[0].trim().slice(0, 80));
   }
   // matplotlib text boxes (checked when the figure was made, see balancelab.viz.style.text_clashes)
   const figures = Array.from(main.querySelectorAll(".bl-figure"));
@@ -653,7 +660,7 @@ def _reader_problems(page, where: str) -> list[str]:
 
 
 def _png_dpi(src: str, site: Path) -> float:
-    """The dpi a PNG declares (72 when it declares none), from a data URI's start or a site file."""
+    """The dpi a PNG or WebP declares (72 when it declares none), from a data URI's start or a site file."""
     import base64
     import io
 
@@ -665,18 +672,26 @@ def _png_dpi(src: str, site: Path) -> float:
     else:
         data = (site / unquote(urlsplit(src).path.lstrip("/"))).read_bytes()
     try:
-        dpi = Image.open(io.BytesIO(data)).info.get("dpi", (72, 72))[0]
-    except Exception:  # not a PNG header: the test reports it as unreadable
+        im = Image.open(io.BytesIO(data))
+        # a PNG's pHYs chunk, or a WebP's EXIF XResolution (in dots per inch, unit 2)
+        exif = im.getexif() if im.format == "WEBP" else {}
+        dpi = exif[0x011A] if exif.get(0x0128) == 2 and 0x011A in exif else im.info.get("dpi", (72, 72))[0]
+    except Exception:  # not an image header: the test reports it as unreadable
         return 0.0
     return float(dpi)
 
 
 def _figure_problems(res: dict, site: Path, where: str) -> list[str]:
-    """Figures whose smallest text (MIN_FONT_PT at their dpi, as shown) is under MIN_FONT_PX."""
+    """Figures whose smallest text (MIN_FONT_PT at their dpi, as shown) is under MIN_FONT_PX, and
+    figures or animation frames with fewer than PIXEL_RATIO device pixels per CSS pixel shown
+    (soft on a high-density screen)."""
     from balancelab.viz import style
 
     problems = []
     for pic in res["pictures"]:
+        if pic["natural"] < style.PIXEL_RATIO * pic["shown"] - 1:
+            problems.append(f"{where}: a picture {pic['natural']} px wide shown {pic['shown']:.0f} px wide "
+                            f"(< {style.PIXEL_RATIO}x: soft on a high-density screen): {pic['src'][:60]}")
         dpi = _png_dpi(pic["src"], site)
         if dpi < 110:
             problems.append(f"{where}: a figure at {dpi:.0f} dpi (< 110): {pic['src'][:60]}")

@@ -32,7 +32,7 @@ SITE = ROOT / "_build" / "html"
 #: Width (CSS px) of the page's content column on a 390 px phone, measured in the built site
 #: (the browser test below checks it is not narrower).
 PHONE_CONTENT = 340
-IMG_RE = re.compile(r'<img [^>]*src="data:image/png;base64,([^"]+)"[^>]*>')
+IMG_RE = re.compile(r'<img [^>]*src="data:image/webp;base64,([^"]+)"[^>]*>')
 
 
 def _texts(fig) -> list[Text]:
@@ -135,7 +135,7 @@ def test_a_row_of_panels_becomes_one_image_per_panel_at_the_house_resolution():
     for i, im in enumerate(images):
         # PIXEL_RATIO device pixels per CSS pixel: sharp on a high-density screen
         assert style.PIXEL_RATIO >= 2
-        assert round(im.info["dpi"][0]) == style.DPI * style.PIXEL_RATIO
+        assert im.format == "WEBP" and round(im.getexif()[0x011A]) == style.DPI * style.PIXEL_RATIO
         assert abs(im.size[0] - style.PIXEL_RATIO * widths[i]) <= style.PIXEL_RATIO
         # each panel is about a third of the figure, shown at the house resolution
         assert 0.2 * 12 * style.DPI < widths[i] < 0.4 * 12 * style.DPI

@@ -263,3 +263,52 @@ def test_clicking_a_solution_title_opens_it_without_an_error(open_page):
     solution.locator(".admonition-title a").first.click()
     expect(body).to_be_visible()
     assert page.url.endswith(START), f"the click left the page: {page.url}"
+
+
+#: The colours a reader sees on a page: the page's background and text, every figure and
+#: animation frame (its filter and the background it sits on) and every text output's text on
+#: its background (the first ancestor that paints one).
+COLOURS = """
+() => {
+  const rgb = s => (s.match(/[\\d.]+/g) || []).map(Number);
+  const ground = e => {
+    for (let a = e; a; a = a.parentElement) {
+      const c = rgb(getComputedStyle(a).backgroundColor);
+      if (c.length === 3 || (c.length === 4 && c[3] > 0.5)) return c.slice(0, 3);
+    }
+    return [255, 255, 255];
+  };
+  const main = document.querySelector("main");
+  const pictures = Array.from(main.querySelectorAll(".bl-figure img, div.animation img")).map(i => ({
+    filter: getComputedStyle(i).filter, opacity: +getComputedStyle(i).opacity, ground: ground(i)}));
+  const outputs = Array.from(main.querySelectorAll(".cell_output pre, .cell_output .text_html p"))
+    .filter(e => e.textContent.trim()).map(e => ({text: e.textContent.trim().slice(0, 40),
+      colour: rgb(getComputedStyle(e).color), ground: ground(e)}));
+  return {theme: document.documentElement.dataset.theme, stored: localStorage.getItem("mode"),
+          page: ground(document.body), text: rgb(getComputedStyle(main).color), pictures, outputs};
+}
+"""
+
+
+@pytest.mark.parametrize("scheme", ["light", "dark"])
+def test_a_first_visit_follows_the_systems_colour_scheme(browser, server, scheme):
+    """No choice made yet: the page takes the system's colour scheme, and in dark mode its
+    figures and animation frames stay white cards, undimmed, and every printed output stays
+    readable (WCAG AA contrast 4.5:1)."""
+    from test_a11y import _contrast
+
+    ctx = browser.new_context(color_scheme=scheme, viewport={"width": 1280, "height": 900})
+    page = ctx.new_page()
+    page.goto(server + "book/ch2_zfl_springs.html", wait_until="load")
+    c = page.evaluate(COLOURS)
+    ctx.close()
+    assert c["stored"] in (None, "auto") and c["theme"] == scheme, (c["stored"], c["theme"])
+    dark = sum(c["page"]) / 3 < 60
+    assert dark == (scheme == "dark"), f"the page's background {c['page']} in {scheme} mode"
+    assert _contrast(c["text"], c["page"]) >= 4.5
+    assert len(c["pictures"]) >= 3 and len(c["outputs"]) >= 3, c
+    for pic in c["pictures"]:
+        assert pic["filter"] == "none" and pic["opacity"] == 1, pic
+        assert pic["ground"] == [255, 255, 255], pic      # drawn on white, shown on white
+    for out in c["outputs"]:
+        assert _contrast(out["colour"], out["ground"]) >= 4.5, out

@@ -11,7 +11,9 @@ of HTML that plays with no kernel and no network. On top of matplotlib's JavaScr
   region that stays quiet while the animation plays);
 * fits a phone's column: the slider and the row of buttons shrink with the page (390 px wide
   screens) instead of sticking out;
-* never starts by itself, and has no transitions for readers who ask for reduced motion.
+* never starts by itself, and has no transitions for readers who ask for reduced motion;
+* shows the frames of balancelab's animations (drawn with ``pixel_ratio`` device pixels per CSS
+  pixel) at the figure's own size: sharp on high-density screens.
 
 The text alternative of the frames (the image's ``alt``) says what the animation shows; by
 default it is the finding :func:`~balancelab.viz.animate` computes from the design's numbers
@@ -117,15 +119,41 @@ def offline_page(page: str) -> str:
     return page
 
 
-def _accessible(page: str, alt: str, labels: list[str]) -> str:
-    """matplotlib's player HTML with a named slider, spoken frame labels and a phone-width layout."""
+#: One frame of matplotlib's player saved as a PNG (its base64 text split by backslash-newlines).
+_PNG_FRAME = re.compile(r'(frames\[\d+\] = ")data:image/png;base64,([^"]*)"')
+
+
+def _compact_frames(page: str, dpi: float) -> str:
+    """matplotlib's PNG frames of a player as the house style's lossless WebP (line art: a few
+    times smaller than the full-colour PNGs), ``dpi`` recorded in each."""
+    import base64
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    from .style import webp_image
+
+    def one(m: re.Match) -> str:
+        png = base64.b64decode(m.group(2).replace("\\\n", "").replace("\n", ""))
+        rgb = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))
+        data = base64.encodebytes(webp_image(rgb, dpi)).decode("ascii").replace("\n", "\\\n")
+        return f'{m.group(1)}data:image/webp;base64,{data}"'
+
+    return _PNG_FRAME.sub(one, page)
+
+
+def _accessible(page: str, alt: str, labels: list[str], size: tuple[int, int] | None = None) -> str:
+    """matplotlib's player HTML with a named slider, spoken frame labels and a phone-width layout;
+    its frames shown at ``size`` (CSS px) when given (frames drawn for high-density screens)."""
     m = re.search(r'id="_anim_slider(\w+)"', page)
     if m is None:
         raise ValueError("not a matplotlib JavaScript player: its frame slider is missing")
     uid = m.group(1)
     first = f"frame 1 of {len(labels)}" + (f": {labels[0]}" if labels and labels[0] else "")
     page = page.replace('<div class="animation">', '<div class="animation bl-player">', 1)
-    page = page.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" id=', 1)
+    shown = f'width="{size[0]}" height="{size[1]}" ' if size else ""
+    page = page.replace("<img id=", f'<img alt="{escape(alt, quote=True)}" {shown}id=', 1)
     page = page.replace(f'<input id="_anim_slider{uid}"',
                         f'<input aria-label="Frame" aria-valuetext="{escape(first, quote=True)}" '
                         f'id="_anim_slider{uid}"', 1)
@@ -200,8 +228,11 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
     >>> p, 'alt="a lever turning"' in p.html, 'aria-label="Frame"' in p.html
     (<animation player, 4 frames>, True, True)
     """
+    import matplotlib
     import matplotlib.pyplot as plt
     from matplotlib.animation import Animation
+
+    from .style import PIXEL_RATIO
 
     if not isinstance(anim, Animation):
         raise TypeError(f"anim must be a matplotlib Animation (from animate), got {type(anim).__name__}")
@@ -214,8 +245,20 @@ def player(anim, alt: str | None = None, default_mode: str = "loop") -> Player:
         raise ValueError("alt must describe the animation in words (a non-empty string)")
     if default_mode not in ("loop", "once", "reflect"):
         raise ValueError(f"default_mode must be 'loop', 'once' or 'reflect', got {default_mode!r}")
-    html = offline_page(anim.to_jshtml(default_mode=default_mode))
+    ratio = getattr(anim, "pixel_ratio", None)
+    if ratio is not None:
+        # balancelab's animations draw their frames at pixel_ratio times the size they are shown at
+        html = offline_page(anim.to_jshtml(default_mode=default_mode))
+        size = getattr(anim, "shown_size", None) if ratio != 1 else None
+    else:
+        # any other matplotlib animation: its frames saved at PIXEL_RATIO times its figure's dpi
+        own = anim._fig  # type: ignore[attr-defined]  # matplotlib's only name for the figure
+        with matplotlib.rc_context({"savefig.dpi": own.dpi * PIXEL_RATIO}):
+            html = offline_page(anim.to_jshtml(default_mode=default_mode))
+        html = _compact_frames(html, own.dpi * PIXEL_RATIO)
+        w, h = own.get_size_inches() * own.dpi
+        size = (int(round(w)), int(round(h)))
     frames = len(set(re.findall(r"frames\[(\d+)\]", html)))
     fig = getattr(anim, "figure", None)      # balancelab's animations name their figure
     plt.close(fig if fig is not None else anim._fig)  # type: ignore[attr-defined]  # any other matplotlib animation: its only name
-    return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames)), frames)
+    return Player(_accessible(html, " ".join(alt.split()), _labels(anim, frames), size), frames)

@@ -1,11 +1,11 @@
 """Animation frames loaded when the reader comes to the animation, not with the page.
 
-An animation of the course (``balancelab.viz.player``) embeds every frame in the page as a PNG
-data URI: 24 to 48 frames, 0.7 to 2 MB of a chapter's first visit. After the build, every
+An animation of the course (``balancelab.viz.player``) embeds every frame in the page as a WebP
+data URI: 24 to 48 frames, most of a chapter's first visit. After the build, every
 player's script keeps its first frame (what the page shows, and what the printed course prints)
-and writes the others as PNG files ``_images/frames/<hash>.png`` (binary: a quarter smaller than
-their base64 text), which a loader gives to the player when it comes within a screen of the
-window (or the reader touches or focuses it). A frame that repeats another (in the same or in
+and writes the others as image files ``_images/frames/<hash>.webp`` (``.png`` for PNG frames;
+binary: a quarter smaller than their base64 text), which a loader gives to the player when it
+comes within a screen of the window (or the reader touches or focuses it). A frame that repeats another (in the same or in
 another animation) is one file. Plain image addresses keep the site working when it is opened
 from the disk (``file://``).
 
@@ -51,9 +51,12 @@ LOADER = """
 
 
 def _frame_file(data_uri: str) -> tuple[str, bytes]:
-    """The file name (its content's hash) and the PNG bytes of a frame's data URI."""
-    png = base64.b64decode(data_uri.split(",", 1)[1])
-    return hashlib.sha1(png).hexdigest()[:16] + ".png", png
+    """The file name (its content's hash, the extension of its image type) and the bytes of a
+    frame's data URI."""
+    head, data = data_uri.split(",", 1)
+    kind = head[len("data:image/"):].split(";", 1)[0]
+    image = base64.b64decode(data)
+    return hashlib.sha1(image).hexdigest()[:16] + "." + kind, image
 
 
 def lazy_page(html: str, prefix: str) -> tuple[str, dict]:
@@ -143,7 +146,7 @@ def _drop_unused(root: Path) -> None:
     named = set()
     for page in root.rglob("*.html"):
         if page.relative_to(root).parts[0] not in ("vendor", "_static", "_sources"):
-            named |= set(re.findall(FOLDER + r"/([0-9a-f]+\.png)", page.read_text(encoding="utf-8", errors="replace")))
+            named |= set(re.findall(FOLDER + r"/([0-9a-f]+\.[a-z]+)", page.read_text(encoding="utf-8", errors="replace")))
     for path in folder.iterdir():
         if path.name not in named:
             path.unlink()

@@ -9,8 +9,8 @@
 * after the build the site sheds what no reader uses (:func:`slim_site`): the Font Awesome
   JavaScript (1.5 MB; the theme's style sheet draws the same icons with its web fonts), the
   MyST sources, MathJax's speech rules for languages other than English (the English rules and
-  Nemeth braille stay: screen readers use them), MathJax's input bundles no page loads, the
-  second copies of the components ``tex-chtml.js`` holds (:data:`MATHJAX_BUNDLED`) and the
+  Nemeth braille stay: screen readers use them), MathJax's input bundles and all-packages file
+  that no page loads, the second copies of the components ``tex-chtml.js`` holds (:data:`MATHJAX_BUNDLED`) and the
   widget manager's icon fonts in formats no browser that runs it asks for (:data:`LEGACY_FONTS`).
 """
 from __future__ import annotations
@@ -38,6 +38,9 @@ MATHJAX_BUNDLED = ("loader.js", "startup.js", "core.js", "output/chtml.js", "out
 UNUSED = ("_static/scripts/fontawesome.js", "_static/scripts/fontawesome.js.LICENSE.txt",
           "_static/vendor/fontawesome/webfonts/*.ttf", "_sources/**/*.md",
           "vendor/mathjax/input/tex-full.js", "vendor/mathjax/input/tex-base.js", "vendor/mathjax/input/tex.js",
+          # every TeX package in one file: only a page that asks for it by name loads it (autoload
+          # fetches each package a formula uses on its own)
+          "vendor/mathjax/input/tex/extensions/all-packages.js",
           "vendor/mathjax/input/asciimath.js", "vendor/mathjax/input/mml.js", "vendor/mathjax/input/mml",
           *(f"vendor/html-manager/*.{ext}" for ext in LEGACY_FONTS),
           *(f"vendor/mathjax/{name}" for name in MATHJAX_BUNDLED))
