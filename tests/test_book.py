@@ -819,7 +819,8 @@ def test_every_page_in_a_browser(site, server, browser, width):
                 problems.append(f"{where}: animation {i} shows the same picture in every frame")
             if int(slider.get_attribute("max") or 0) < 2:
                 problems.append(f"{where}: animation {i} has fewer than 3 frames")
-        page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True)
+        page.screenshot(path=str(SHOTS / (rel.replace("/", "__")[:-5] + f"_{width}.png")), full_page=True,
+                        timeout=180_000)  # a long page on a loaded machine: the shot waits for fonts and layout
         problems += _reader_problems(page, where)
         if width == 390:
             problems += [f"{where}: wider than the column: {w}" for w in page.evaluate(WIDTH_CHECKS)]
