@@ -341,15 +341,17 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
              signed: str = "", hint: str = BALANCE_HINT) -> tuple[bool, str, str]:
     """Accept any expression equivalent to ``expected`` (a sympy expression in ``names``).
 
-    Symbols are matched by name, whatever their assumptions. The difference must simplify
-    to zero; when ``simplify`` cannot decide, the two are compared at six seeded random
-    positive values of the symbols (relative 1e-9), which equivalent expressions always
-    pass.
+    Symbols are matched by name, whatever their assumptions. The answer is read without running
+    code (:func:`~.variant.read_expression`: a string may use only ``names``, a fixed set of
+    functions and ``pi``) and compared with ``expected`` at 16 random values of the symbols drawn
+    afresh at every call (:func:`~.variant.equivalent`, relative 1e-7): equivalent expressions
+    always pass, and an expression built to agree at known points does not. No symbolic
+    simplification runs, so a huge answer cannot stall the check.
 
     Parameters
     ----------
     answer : sympy.Expr or str or number
-        The student's expression (a string is parsed with the allowed symbols).
+        The student's expression (a string is parsed with the allowed symbols only).
     expected : sympy.Expr
         The right expression.
     names : str
@@ -357,8 +359,8 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     what : str
         How to name the answer in messages.
     signed : str
-        Names (among ``names``) that may be negative: real symbols, sampled in
-        ``[-2, -0.3] U [0.3, 2]`` by the spot check; the others are positive.
+        Names (among ``names``) that may be negative: drawn in ``[-2, 2]``; the others are
+        positive, drawn in ``[0.3, 2]``.
     hint : str
         The hint for a wrong expression: the way to the task's result (by default the way to a
         balance condition, :data:`BALANCE_HINT`). An expression that is the expected one with the
@@ -372,7 +374,7 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     Raises
     ------
     AnswerError
-        If the answer cannot be parsed, is an equation, or uses other symbols.
+        If the answer cannot be read, is an equation, or uses other symbols or functions.
 
     Examples
     --------
@@ -380,60 +382,34 @@ def symbolic(answer, expected, names: str, what: str = "the expression",
     >>> m, r = sp.symbols("m r")
     >>> symbolic("r*m/2", m * r / 2, "m r")[0], symbolic(m * r, m * r / 2, "m r")[0]
     (True, False)
+    >>> symbolic("__import__('os').system('ls')", m * r / 2, "m r")
+    Traceback (most recent call last):
+    ...
+    balancelab.core.errors.AnswerError: The expression could not be read as a formula.
     """
-    import sympy as sp
+    from .variant import equivalent, read_expression
 
     sign = set(signed.split())
-    allowed = {n: sp.Symbol(n, real=True) if n in sign else sp.Symbol(n, positive=True) for n in names.split()}
-    way, hint = hint, f"Use the symbols {', '.join(allowed)} (e.g. `{next(iter(allowed))} = sympy.Symbol(...)`)."
-    if isinstance(answer, (str,)):
-        try:
-            expr = sp.sympify(answer, locals=dict(allowed))
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError) as err:
-            raise AnswerError(f"{_cap(what)} {_short(answer)} could not be read as a formula.", hint) from err
-    elif isinstance(answer, sp.Basic) or _plain_number(answer) is not None:
-        expr = sp.sympify(answer)
-    else:
-        raise AnswerError(f"{_cap(what)} should be a sympy expression, got {type(answer).__name__}.",
-                          hint)
-    if isinstance(expr, sp.Equality):
-        raise AnswerError(f"{_cap(what)} is an equation; give the right-hand side only "
-                          "(an expression), e.g. the value of k.", hint)
-    if not isinstance(expr, sp.Expr):
-        raise AnswerError(f"{_cap(what)} is not an algebraic expression.", hint)
-    extra = sorted(str(s) for s in expr.free_symbols if str(s) not in allowed)
-    if extra:
-        raise AnswerError(f"{_cap(what)} uses symbols not in the problem: {', '.join(extra)}.", hint)
-    expr = expr.subs({s: allowed[str(s)] for s in expr.free_symbols})
-    if expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
-        raise AnswerError(f"{_cap(what)} contains an infinity or NaN.", hint)
-    expected = sp.sympify(expected).subs({s: allowed[str(s)] for s in sp.sympify(expected).free_symbols})
-    if _equivalent(expr, expected, allowed, sign):
+    ranges = {n: (-2.0, 2.0) if n in sign else (0.3, 2.0) for n in names.split()}
+    mine = read_expression(answer, tuple(ranges), what)
+    if mine.has(*_infinities()):
+        raise AnswerError(f"{_cap(what)} contains an infinity or NaN.", f"Use the symbols {', '.join(ranges)}.")
+    ok, message, _ = equivalent(mine, expected, ranges, what, seed=None)
+    if ok:
         return True, f"{_cap(what)} is equivalent to the expected one.", ""
-    if _equivalent(-expr, expected, allowed, sign, exact=False):
+    if message.endswith("is a number: the task asks for a formula in its symbols."):
+        return False, message, hint
+    flipped, _, _ = equivalent(-mine, expected, ranges, what, seed=None)
+    if flipped:
         return False, f"{_cap(what)} is not equivalent to the expected one.", \
             "It is the expected expression with the opposite sign: check which way each term acts."
-    return False, f"{_cap(what)} is not equivalent to the expected one.", way
+    return False, f"{_cap(what)} is not equivalent to the expected one.", hint
 
 
-def _equivalent(expr, expected, allowed: dict, sign: set, exact: bool = True) -> bool:
-    """Whether two expressions are equal: their difference simplifies to 0 (tried when ``exact``), or they
-    agree at six seeded points."""
+def _infinities() -> tuple:
     import sympy as sp
 
-    if exact and sp.simplify(expr - expected) == 0:
-        return True
-    rng = np.random.default_rng(1)
-    syms = sorted(allowed.values(), key=str)
-    f_a = sp.lambdify(syms, expr, "numpy")
-    f_e = sp.lambdify(syms, expected, "numpy")
-    for _ in range(6):
-        drawn = rng.uniform(0.3, 2.0, len(syms))
-        vals = [-v if str(s) in sign and rng.random() < 0.5 else v for v, s in zip(drawn, syms)]
-        a, e = complex(f_a(*vals)), complex(f_e(*vals))
-        if not abs(a - e) <= 1e-9 * max(1.0, abs(e)):
-            return False
-    return True
+    return (sp.nan, sp.zoo, sp.oo, -sp.oo)
 
 
 def personal_option(rng: np.random.Generator | None, published: str, options: tuple[str, ...]) -> str:

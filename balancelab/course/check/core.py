@@ -388,7 +388,11 @@ def check(task_id: str, answer: Any) -> Verdict:
         return Verdict(t.id, False, f"Task {t.id} is to be derived by hand, and this cell calls "
                        f"{', '.join(found)}: the library may confirm your result in another cell, not give it.",
                        t.expects, 0.0, t.points)
-    return check_data(task_id, encode_answer(answer))  # counted there
+    try:
+        data = encode_answer(answer)
+    except (RecursionError, OverflowError, MemoryError, ValueError, TypeError) as err:  # never raise at a student
+        data = {"other": f"answer that cannot be read ({type(err).__name__})"}
+    return check_data(task_id, data)  # counted there
 
 
 def _cell_source() -> str:

@@ -31,7 +31,7 @@ SHORTCUTS: dict[str, tuple[str, ...]] = {
             "_stage_rates"),
     "7.5": ("balance", "balance_conditions", "potential_energy_symbolic", "free_choices", "_own_rates"),
     "8.4": ("rate_error_arm", "generalized_force", "balance_report", "potential_energy", "balance"),
-    "9.3": ("noncircular_pulley", "potential_energy_symbolic", "balance_conditions", "balance"),
+    "9.3": ("noncircular_pulley", "potential_energy_symbolic", "balance_conditions", "balance", "_arm_expression"),
 }
 
 

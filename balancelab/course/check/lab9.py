@@ -35,7 +35,8 @@ import numpy as np
 from ...core.elements import G
 from ...methods.practice.springs import ExtensionSpring
 from ...methods.realize.profile_check import polyline_path, polyline_wrap
-from .answers import as_mapping, numeric, quantity, symbolic, personal_option
+from .answers import as_mapping, numeric, personal_option, quantity, symbolic
+from .variant import read_expression
 from .core import AnswerError, register_task
 
 __all__ = ["LAB9_LINK", "LAB9_EYELET", "LAB9_RANGE", "LAB9_MAX_RADIUS", "LAB9_MIN_CURVATURE", "LAB9_TOLERANCE",
@@ -304,10 +305,9 @@ def _t93(answer, angle):
             return True, message, ""
         # the spot check meets square roots of negative numbers where C < m g r sin(theta): compare
         # h^2 (no root), then the sign where the root is real
-        ok2, _, _ = symbolic(sp.sympify(answer, locals={n: sp.Symbol(n) for n in names.split()}) ** 2,
-                             expected ** 2, names, "your h(theta)", signed="theta")
+        mine = read_expression(answer, names, "your h(theta)")  # read without running code, like symbolic
+        ok2, _, _ = symbolic(mine ** 2, expected ** 2, names, "your h(theta)", signed="theta")
     if ok2:
-        mine = sp.sympify(answer, locals={n: sp.Symbol(n) for n in names.split()})
         for theta in (-1.0, -0.3, 0.4, 1.2):
             at = dict(m=1.3, g=9.81, r=0.5, k=900.0, C=40.0, theta=theta)
             signs = [sp.sign(sp.N(e.subs({x: at[str(x)] for x in e.free_symbols}))) for e in (mine, expected)]

@@ -211,7 +211,7 @@ def evaluate(expr: Any, values: Mapping[str, np.ndarray]) -> np.ndarray:
         return ev(expr)
 
 
-def _instances(ranges: Mapping[str, tuple[float, float]], points: int, seed: int) -> dict[str, np.ndarray]:
+def _instances(ranges: Mapping[str, tuple[float, float]], points: int, seed: int | None) -> dict[str, np.ndarray]:
     if not isinstance(points, int) or points < 3:
         raise ValueError(f"points must be an integer >= 3, got {points!r}")
     rng = np.random.default_rng(seed)
@@ -228,11 +228,12 @@ def _instances(ranges: Mapping[str, tuple[float, float]], points: int, seed: int
 
 
 def equivalent(answer: Any, expected: Any, ranges: Mapping[str, tuple[float, float]], what: str = "your formula",
-               *, points: int = 16, rtol: float = 1e-7, seed: int = 0, hint: str = "") -> tuple[bool, str, str]:
+               *, points: int = 16, rtol: float = 1e-7, seed: int | None = None, hint: str = "") -> tuple[bool, str, str]:
     """Whether a formula equals the reference at ``points`` random instances of its symbols.
 
-    Each symbol is drawn uniformly from its range in ``ranges`` (seeded: the same instances on
-    every machine). At each instance where the reference is finite, the two values must agree
+    Each symbol is drawn uniformly from its range in ``ranges``, afresh at every call unless
+    ``seed`` is given (instances known in advance would let an answer be built to agree there).
+    At each instance where the reference is finite, the two values must agree
     within ``rtol`` times the larger of the reference's size there and its median size over
     all instances (so a reference that crosses zero is not judged by a tolerance of zero).
 
@@ -250,8 +251,8 @@ def equivalent(answer: Any, expected: Any, ranges: Mapping[str, tuple[float, flo
         Number of random instances, >= 3.
     rtol : float
         Relative tolerance, > 0.
-    seed : int
-        Seed of the instances.
+    seed : int, optional
+        Seed of the instances (default: fresh ones at every call).
     hint : str
         The hint given with a wrong answer.
 
@@ -285,7 +286,7 @@ def equivalent(answer: Any, expected: Any, ranges: Mapping[str, tuple[float, flo
     return False, f"{what.capitalize()} {found}.", hint or default
 
 
-def _compare(answer, expected, ranges, what: str, points: int, rtol: float, seed: int) -> str:
+def _compare(answer, expected, ranges, what: str, points: int, rtol: float, seed: int | None) -> str:
     """``""`` when equivalent, else what is wrong (``"has the wrong sign"``, ...)."""
     names = tuple(ranges)
     mine = read_expression(answer, names, what)
@@ -360,7 +361,7 @@ def equivalent_parts(answer: Any, expected: Mapping[str, Any], ranges: Mapping[s
                           f"Give them as a tuple ({', '.join(keys)}) or a dict with those keys.")
     options.setdefault("points", 16)
     options.setdefault("rtol", 1e-7)
-    options.setdefault("seed", 0)
+    options.setdefault("seed", None)
     hint = options.pop("hint", "")
     found = [_compare(p, expected[k], ranges, f"your {k}", options["points"], options["rtol"], options["seed"])
              for k, p in zip(keys, parts)]
