@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 import balancelab as bl
@@ -178,6 +178,9 @@ GRAVITY_DESIGNS = ["lacoste_lever", "serial_2r_min_preload", "singh_fourbar", "f
 @given(name=st.sampled_from(GRAVITY_DESIGNS), which=st.integers(0, 10),
        size=st.floats(-3.0, -1.0), sign=st.sampled_from([1.0, -1.0]),
        pair=st.none() | st.tuples(st.floats(0.0, 10.0), st.floats(0.05, 1.0), st.floats(0.05, 1.0)))
+# issue 19: the noise of a 10**8.5 N/m pair put 2.3e-9 of the loads' exchange into the smooth part (it can
+# put up to 7e-9 there): once reported NOT balanced yet resolvable, now "cannot be resolved"
+@example(name="deepak_gravity_fourbar", which=0, size=-1.0, sign=1.0, pair=(8.5, 0.5, 0.125))
 def test_random_spring_rate_imbalances_are_always_caught(name, which, size, sign, pair):
     design = bl.catalog()[name]()
     springs = list(design.springs)

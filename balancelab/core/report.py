@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 
 from .cancel import EXACT, null_subset
 from .samples import check_spread
-from .smooth import smooth_split
+from .smooth import smooth_resolution, smooth_split
 from .validation import positive_int
 
 if TYPE_CHECKING:
@@ -120,6 +120,11 @@ class BalanceReport:
         excess: the spread of the energy's smooth part (:func:`~balancelab.core.smooth.smooth_split`)
         over ``load_scale``; *balanced* then needs it within ``tolerance`` (the allowance covers noise,
         never a real variation). NaN otherwise.
+    smooth_resolution : float
+        When the smooth part exceeds ``tolerance`` while the rest is round-off: how large a smooth
+        spread (over ``load_scale``) the noise alone can make
+        (:func:`~balancelab.core.smooth.smooth_resolution`). Within it the smooth part cannot be told
+        from noise: the verdict is NOT balanced and cannot be resolved. NaN otherwise.
 
     Examples
     --------
@@ -143,12 +148,15 @@ class BalanceReport:
     cancelled: float = 0.0
     roundoff: float = 0.0
     smooth_variation: float = math.nan
+    smooth_resolution: float = math.nan
 
     @property
     def resolvable(self) -> bool:
         """Whether double precision can resolve the verdict: the round-off allowance (J) is at most
-        :data:`MAX_ROUND_OFF_RATIO` times ``tolerance * load_scale``."""
-        return not self.roundoff > MAX_ROUND_OFF_RATIO * self.tolerance * self.load_scale
+        :data:`MAX_ROUND_OFF_RATIO` times ``tolerance * load_scale``, and the smooth part, when it was
+        needed, stands out of the noise (:attr:`smooth_resolution`)."""
+        drowned = self.smooth_variation - self.smooth_resolution <= self.tolerance < self.smooth_variation
+        return not (self.roundoff > MAX_ROUND_OFF_RATIO * self.tolerance * self.load_scale or drowned)
 
     def __str__(self) -> str:
         verdict = "balanced" if self.balanced else "NOT balanced"
@@ -159,8 +167,11 @@ class BalanceReport:
                     if self.cancelled > 0 else "")
         unresolved = ("" if self.resolvable else
                       f" (cannot be resolved: the round-off of energies this large, {self.roundoff:.3g} J, "
-                      f"exceeds {MAX_ROUND_OFF_RATIO:g} x tolerance x the loads' exchange; move the origin "
-                      "near the mechanism, or remove elements that store energy without exchanging it)")
+                      + (f"exceeds {MAX_ROUND_OFF_RATIO:g} x tolerance x the loads' exchange"
+                         if self.roundoff > MAX_ROUND_OFF_RATIO * self.tolerance * self.load_scale else
+                         f"makes a smooth part up to {self.smooth_resolution:.2e} of the loads' exchange")
+                      + "; move the origin near the mechanism, or remove elements that store energy "
+                      "without exchanging it)")
         smooth = ("" if math.isnan(self.smooth_variation) else
                   f", its smooth part by {self.smooth_variation:.2e} (the rest is round-off within "
                   f"{self.roundoff:.3g} J)")
@@ -524,10 +535,12 @@ def _closure_allowance(design, poses, spring_energies) -> float:
 
 
 def _verdict(design: Design, q: np.ndarray, tolerance: float):
-    """``(total energy, scale, roundoff, yardstick, null set's weight, balanced, smooth part)`` at the
-    configurations ``q``. When the variation passes only thanks to the round-off allowance, the verdict
+    """``(total energy, scale, roundoff, yardstick, null set's weight, balanced, smooth part, its
+    noise)`` at the configurations ``q``. When the variation passes only thanks to the round-off allowance, the verdict
     is that of its smooth part (:func:`~balancelab.core.smooth.smooth_split`: the allowance covers noise,
-    never a real variation); the smooth part's spread (J) is NaN when it was not needed."""
+    never a real variation); the smooth part's spread (J) is NaN when it was not needed, and so is the
+    spread the noise alone can give it (:func:`~balancelab.core.smooth.smooth_resolution`, J) unless
+    the smooth part failed."""
     poses = design.poses(q)  # once: the energies and the closure allowance both need them
     vl, vs = (np.stack(e, -1) if e else np.zeros((len(q), 0)) for e in design._element_energies(poses))
     total = vl.sum(-1) + vs.sum(-1)
@@ -541,11 +554,13 @@ def _verdict(design: Design, q: np.ndarray, tolerance: float):
     bound = tolerance * yardstick
     spread = float(np.ptp(total))
     balanced = bool(spread <= bound + roundoff and not roundoff > MAX_ROUND_OFF_RATIO * bound)
-    smooth = math.nan
+    smooth = noise = math.nan
     if balanced and spread > bound:  # only the allowance passes it: its smooth part must pass alone
         smooth, rest = smooth_split(poses, q, q_units(design), total)
         balanced = smooth <= bound and rest <= bound + roundoff
-    return total, scale, roundoff, yardstick, null_weight, balanced, smooth
+        if not balanced and rest <= bound + roundoff:  # could the noise alone make that smooth part?
+            noise = smooth_resolution(poses, q, q_units(design), total)
+    return total, scale, roundoff, yardstick, null_weight, balanced, smooth, noise
 
 
 def roundoff_allowance(design: Design, q: ArrayLike) -> float:
@@ -588,7 +603,7 @@ def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000,
     """
     tolerance = check_tolerance(tolerance)
     q = _configurations(design, q, n, seed)
-    total, scale, roundoff, yardstick, null_weight, balanced, smooth = _verdict(design, q, tolerance)
+    total, scale, roundoff, yardstick, null_weight, balanced, smooth, noise = _verdict(design, q, tolerance)
     spread = float(np.ptp(total))
     gf = design.generalized_force(q)
     mag = np.max(np.abs(gf), axis=-1)
@@ -599,4 +614,4 @@ def balance_report(design: Design, q: ArrayLike | None = None, *, n: int = 1000,
                          balanced=balanced,
                          tolerance=tolerance, n=len(q), load_scale=yardstick, load_variation=spread / yardstick,
                          q_units=q_units(design), cancelled=null_weight, roundoff=roundoff,
-                         smooth_variation=smooth / yardstick)
+                         smooth_variation=smooth / yardstick, smooth_resolution=noise / yardstick)

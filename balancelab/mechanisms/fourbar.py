@@ -43,7 +43,10 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
     The distance from the crank tip ``D`` to ``B`` spans ``[|ground - crank|, ground +
     crank]``; the dyad ``D-C-B`` closes over ``[|coupler - rocker|, coupler + rocker]``;
     the four-bar assembles when the two intervals overlap, i.e. when each link is at
-    most the sum of the other three.
+    most the sum of the other three. When they only touch (one link as long as the other three
+    together, to the round-off of the lengths) the loop closes at one crank angle alone, all four
+    links on a line: a structure, not a mechanism, and it is refused too (it cannot move, so there
+    is nothing to balance).
 
     Parameters
     ----------
@@ -53,11 +56,16 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
     Raises
     ------
     ValueError
-        If the linkage cannot assemble (the message gives the four lengths).
+        If the linkage cannot assemble, or only in one configuration (the message gives the four
+        lengths).
 
     Examples
     --------
     >>> check_assembly(0.1, 0.35, 0.3, 0.4)
+    >>> check_assembly(0.8, 0.3, 0.2, 0.3)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: this four-bar cannot assemble into a mechanism that moves: with crank 0.8 m, ...
     >>> check_assembly(0.1, 0.2, 0.3, 1.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -67,6 +75,13 @@ def check_assembly(crank: float, coupler: float, rocker: float, ground: float) -
         ("crank", "coupler", "rocker", "ground"), (crank, coupler, rocker, ground)))
     if ground + crank < abs(coupler - rocker) or abs(ground - crank) > coupler + rocker:
         raise ValueError(_cannot_assemble(crank, coupler, rocker, ground))
+    # the width of the overlap; each bound is rounded by an ulp of the lengths' sum at most, and the
+    # lengths themselves (0.8 against 0.3 + 0.3 + 0.2) by an ulp each: a width within 4 ulps is a point
+    width = min(ground + crank, coupler + rocker) - max(abs(ground - crank), abs(coupler - rocker))
+    if width <= 4.0 * np.finfo(float).eps * (crank + coupler + rocker + ground):
+        raise ValueError(f"this four-bar cannot assemble into a mechanism that moves: with crank {crank:.4g} m, "
+                         f"coupler {coupler:.4g} m, rocker {rocker:.4g} m and ground {ground:.4g} m one link is "
+                         "as long as the other three together, so the loop closes only with all four on one line")
 
 
 def _cannot_assemble(crank, coupler, rocker, ground) -> str:
