@@ -122,10 +122,10 @@ def check_spread(q: np.ndarray, units: Sequence[str], names: Sequence[str]) -> N
     ...
     ValueError: q must vary every coordinate independently over its range (so that each term of the energy, cos and sin of every coordinate, their doubles and their differences, is seen to change): on these 40 configurations cos(q2 - q1) does not vary independently; coordinates ('theta_1', 'theta_2'); use design.sample(n) or a grid
     >>> s = np.linspace(-3.0, 3.0, 200)
-    >>> check_spread(np.c_[s, 2.5 * np.sin(2 * s) + 0.3 * s], ("rad", "rad"), ("theta_1", "theta_2"))  # a curve
+    >>> check_spread(np.c_[s, 2.5 * np.sin(3 * s)], ("rad", "rad"), ("theta_1", "theta_2"))  # a curve
     Traceback (most recent call last):
     ...
-    ValueError: q must fill the configuration space, not lie on a curve or surface (a level set of the energy is constant on any design): these 200 configurations fill 1.1 of the 2 dimensions of ('theta_1', 'theta_2'), at least 1.5 are needed; use design.sample(n) or a grid
+    ValueError: q must fill the configuration space, not lie on a curve or surface (a level set of the energy is constant on any design): these 200 configurations fill 1.3 of the 2 dimensions of ('theta_1', 'theta_2'), at least 1.5 are needed; use design.sample(n) or a grid
     """
     for i, unit in enumerate(units):  # each coordinate: enough distinct values (an angle modulo a turn)
         v = np.angle(np.exp(1j * q[:, i])) if unit == "rad" else q[:, i]
