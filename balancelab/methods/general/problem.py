@@ -40,7 +40,9 @@ class Block:
     ``kind`` is ``"spring"`` or ``"mass"``; ``ends`` the attachments ``(body, point or
     None)`` (one for a counterweight); ``free`` the index of the free end (``None`` if
     both ends are fixed); ``cols`` the indices of ``(k or M, m_x, m_y)`` in ``x``; ``box``
-    the local box ``((x_lo, x_hi), (y_lo, y_hi))`` (m) of the free point.
+    the local box ``((x_lo, x_hi), (y_lo, y_hi))`` (m) of the free point; ``end_boxes`` a spring's
+    box for each end, that of the body the end is on (the box of whichever end is free, and of
+    both ends of a spring whose two ends are free: ``free == "both"``).
     """
 
     kind: str
@@ -48,6 +50,19 @@ class Block:
     free: int | None = None
     cols: list = field(default_factory=list)
     box: tuple = ((-1.0, 1.0), (-1.0, 1.0))
+    end_boxes: list | None = None
+
+    def box_of(self, end: int) -> tuple:
+        """The box (m, local frame) of end ``end`` (0 or 1): its body's box, else the block's box."""
+        return self.end_boxes[end] if self.end_boxes is not None else self.box
+
+    def set_free(self, end: int | str | None) -> None:
+        """Free end ``end`` (0, 1, ``"both"`` or None); the block's box becomes that end's box."""
+        self.free = end  # type: ignore[assignment]  # "both" only while a spring's two ends are lifted
+        if end == "both":
+            self.box = self.box_of(0)
+        elif isinstance(end, int):
+            self.box = self.box_of(end)
 
 
 @dataclass
@@ -223,11 +238,13 @@ def lp_constraints(p: Problem, S: np.ndarray):
         if b.free is None:
             continue
         k = b.cols[0]
-        for axis, (lo, hi) in enumerate(b.box):
-            m = b.cols[1 + axis]
-            for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
-                row = np.zeros(n)
-                row[m], row[k] = sign * S[m], -sign * lim * S[k]
-                rows.append(row)
+        boxed = [(1, b.box)] + ([(3, b.box_of(1))] if b.free == "both" else [])  # (first column, box)
+        for first, box in boxed:
+            for axis, (lo, hi) in enumerate(box):
+                m = b.cols[first + axis]
+                for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
+                    row = np.zeros(n)
+                    row[m], row[k] = sign * S[m], -sign * lim * S[k]
+                    rows.append(row)
     A_ub = np.array(rows) if rows else None
     return bounds, A_ub, (np.zeros(len(rows)) if rows else None)
