@@ -113,9 +113,32 @@ def _spring_columns(poses, block):
         d = _world(poses, ba, pa) - _world(poses, bb, pb)
         return [0.5 * (d * d).sum(-1)]
     (bf, _), (bx, px) = (block.ends[1], block.ends[0]) if block.free == 1 else (block.ends[0], block.ends[1])
-    u = _world(poses, bx, px) - poses[:, bf, :2]
+    cx, cy = box_centre(block.box)  # measured from the free point's box centre c: a far box costs no digits
+    u = _world(poses, bx, px) - _world(poses, bf, (cx, cy))
     ux, uy = turn_back(np.cos(poses[:, bf, 2]), np.sin(poses[:, bf, 2]), (u[:, 0], u[:, 1]))   # R_c^T u
-    return [0.5 * (u * u).sum(-1), -ux, -uy]
+    # 0.5 |u + R c|^2 and -(R^T u + c), less their constants 0.5 |c|^2 and -c (see columns)
+    return [0.5 * (u * u).sum(-1) + ux * cx + uy * cy, -ux, -uy]
+
+
+def box_centre(box: tuple) -> tuple[float, float]:
+    """The centre (m) of a box ``((x_lo, x_hi), (y_lo, y_hi))``.
+
+    Examples
+    --------
+    >>> box_centre(((9996.0, 10004.0), (-30004.0, -29996.0)))
+    (10000.0, -30000.0)
+    """
+    (xl, xh), (yl, yh) = box
+    return ((xl + xh) / 2, (yl + yh) / 2)
+
+
+def _constants(block) -> list[float]:
+    """The constants left out of a spring's columns with one free end (``0.5 |c|^2`` and ``-c``, with
+    ``c`` its box centre): they add to the means, the preload's linear part."""
+    if block.kind != "spring" or block.free not in (0, 1):
+        return []
+    cx, cy = box_centre(block.box)
+    return [0.5 * (cx * cx + cy * cy), -cx, -cy]
 
 
 def _mass_columns(poses, block):
@@ -164,7 +187,8 @@ def columns(design, blocks, q) -> Problem:
         new = _spring_columns(poses, block) if block.kind == "spring" else _mass_columns(poses, block)
         block.cols = list(range(len(cols), len(cols) + len(new)))
         cols += new
-        mean += [float(np.mean(c)) if block.kind == "spring" else 0.0 for c in new]
+        extra = _constants(block) or [0.0] * len(new)
+        mean += [float(np.mean(c)) + e if block.kind == "spring" else 0.0 for c, e in zip(new, extra)]
     A = np.stack(cols, -1) if cols else np.zeros((len(q), 0))
     vl, vs = design.element_energies(q)
     v = vl.sum(-1) + vs.sum(-1)
