@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..core.design import Design
-from ..core.report import format_q, q_shown, q_units
+from ..core.report import MAX_CONFIGURATIONS, format_q, q_shown, q_units
 from ..core.validation import finite_real
 from .style import FONT, fit_title
 from .frame import PALETTE, STYLE, angle_label, check_design, count, new_axes, range_grid
@@ -246,7 +246,8 @@ class EnergyView:
         check_design(design)
         self.path = design.dof > 2  # curves along sweep_path instead of a map
         self.ax = new_axes(ax, figsize=(5.0, 3.4))
-        self.n = count("n", n) if n is not None else (61 if design.dof == 2 else 241)
+        _check_axes("ax", ax)
+        self.n = _plot_count(design, n) if n is not None else (61 if design.dof == 2 else 241)
         self.residual_ax = residual_ax
         self.show_title = title
         #: fixed energy-axis limits (J) for one dof; ``None`` to fit each design
@@ -521,7 +522,8 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
         may differ by whole turns); outside it a ValueError names ``q`` and the range.
     n : int, optional
         Points (an integer >= 2) along the range (1 dof, default 241) or per side of the map (2 dof,
-        default 61).
+        default 61); at most :data:`~balancelab.core.report.MAX_CONFIGURATIONS` configurations in
+        all (a map's ``n * n``), else a ValueError names ``n`` and its largest value.
     residual : bool or matplotlib.axes.Axes, optional
         Two degrees of freedom only: draw the map of the residual generalized force
         ``|dV/dq| / scale`` too, on a second Axes of a new figure (``True``, the default
@@ -542,8 +544,13 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     True
     """
     check_design(design)
+    _check_axes("ax", ax)
+    if n is not None:
+        _plot_count(design, n)
     residual_ax = None
     if design.dof == 2:
+        if residual is not None and not isinstance(residual, bool):
+            _check_axes("residual", residual)
         if residual is None:
             residual = ax is None
         if hasattr(residual, "imshow"):
@@ -558,3 +565,37 @@ def energy_plot(design: Design, ax=None, *, q=None, n: int | None = None, residu
     view.ax.energy = view
     return view.ax
 
+
+def _plot_count(design: Design, n: int) -> int:
+    """``n`` (points along the range, or per side of a 2-dof map) checked: an int >= 2 whose plot
+    holds at most ``MAX_CONFIGURATIONS`` configurations, else a ValueError naming ``n`` and the range.
+
+    Examples
+    --------
+    >>> import balancelab as bl
+    >>> arm = bl.singh.serial_2r_min_preload()
+    >>> _plot_count(arm, 400)
+    400
+    >>> _plot_count(arm, 10**6)
+    Traceback (most recent call last):
+    ...
+    ValueError: n must be an integer from 2 to 447 for a design with 2 coordinates (a map of n * n configurations, at most 200000), got 1000000
+    """
+    n = count("n", n)
+    grid = 2 if design.dof == 2 else 1
+    largest = math.isqrt(MAX_CONFIGURATIONS) if grid == 2 else MAX_CONFIGURATIONS
+    if n > largest:
+        shape = "a map of n * n configurations" if grid == 2 else "n configurations"
+        raise ValueError(f"n must be an integer from 2 to {largest} for a design with {design.dof} coordinate"
+                         f"{'s' if design.dof > 1 else ''} ({shape}, at most {MAX_CONFIGURATIONS}), got {n}")
+    return n
+
+
+def _check_axes(name: str, ax) -> None:
+    """Refuse an ``ax`` that is not a matplotlib Axes (``None`` is allowed: a new figure)."""
+    if ax is None:
+        return
+    from matplotlib.axes import Axes
+
+    if not isinstance(ax, Axes):
+        raise TypeError(f"{name} must be a matplotlib Axes (or None for a new figure), got {type(ax).__name__}")

@@ -80,8 +80,9 @@ def _blocks(design: Design, springs, counterweights, boxes) -> list[Block]:
         if ends[0][0] == ends[1][0]:
             raise ValueError(f"springs[{i}] joins body {design.bodies[ends[0][0]]!r} to itself")
         free = 0 if ends[0][1] is None else 1 if ends[1][1] is None else None
-        box = boxes[ends[free][0] if free is not None else ends[1][0] if ends[0][1] is not None else ends[0][0]]
-        blocks.append(Block("spring", ends, free, box=box))
+        end_boxes = [boxes[ends[0][0]], boxes[ends[1][0]]]  # each end boxed by its own body's box
+        box = end_boxes[free if free is not None else 1 if ends[0][1] is not None else 0]
+        blocks.append(Block("spring", ends, free, box=box, end_boxes=end_boxes))
     for i, cand in enumerate(counterweights):
         body, point = _end(design, cand, f"counterweights[{i}]")
         if body == 0:

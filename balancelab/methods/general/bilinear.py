@@ -73,25 +73,28 @@ def rounds(design, blocks, both, q, objective):
             k, mx, my = sol.x[b.cols]
             if k > 0:
                 b.ends[b.free] = (b.ends[b.free][0], (mx / k, my / k))
-                b.free = 1 - b.free
+                b.set_free(1 - b.free)
                 b.ends[b.free] = (b.ends[b.free][0], None)
     assert best is not None  # the first round either balances or raised
     value, p, sol, ends, frees = best
     for b, e, f in zip(blocks, ends, frees):
-        b.ends, b.free = e, f
+        b.ends = e
+        b.set_free(f)
     return value, p, sol
 
 
 def _lift(blocks, both):
     saved = [(list(b.ends), b.free) for b in blocks]
     for b in both:
-        b.ends, b.free = [(b.ends[0][0], None), (b.ends[1][0], None)], "both"
+        b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
+        b.set_free("both")
     return saved
 
 
 def _restore(blocks, saved):
     for b, (e, f) in zip(blocks, saved):
-        b.ends, b.free = e, f
+        b.ends = e
+        b.set_free(f)
 
 
 def lifted_ends(design, blocks, both, q) -> list:
@@ -134,12 +137,12 @@ def start_points(design, blocks, both, q, default_point, size: float):
     lifted = lifted_ends(design, blocks, both, q)
     for fixed in (0, 1):
         if all(e is not None for e in lifted):
-            starts.append((fixed, [_clip(e[fixed], b.box) for e, b in zip(lifted, both)]))
+            starts.append((fixed, [_clip(e[fixed], b.box_of(fixed)) for e, b in zip(lifted, both)]))
     for fx, fy in _GRID:
         for fixed in (0, 1):
             pts = []
             for b in both:
-                (xl, xh), (yl, yh) = b.box
+                (xl, xh), (yl, yh) = b.box_of(fixed)
                 pts.append(((xl + xh) / 2 + fx * (xh - xl) / 2, (yl + yh) / 2 + fy * (yh - yl) / 2))
             starts.append((fixed, pts))
     return starts
@@ -158,7 +161,7 @@ def _best_start(design, blocks, both, q, objective, starts):
         for b, pt in zip(both, pts):
             b.ends = [(b.ends[0][0], None), (b.ends[1][0], None)]
             b.ends[fixed] = (b.ends[fixed][0], pt)
-            b.free = 1 - fixed
+            b.set_free(1 - fixed)
         try:
             value, p, sol = rounds(design, blocks, both, q, objective)
         except InfeasibleDesign as err:
@@ -235,9 +238,10 @@ def nls_starts(design: Design, blocks: list, both: list, q: np.ndarray, keep: in
     for _ in range(NLS_STARTS):
         z0 = []
         for b in both:
-            (xl, xh), (yl, yh) = b.box
-            pts = rng.uniform((xl, yl, xl, yl), (xh, yh, xh, yh))
-            z0 += [np.log(scale / max((xh - xl) * (yh - yl), 1e-300)), *pts]
+            (xl, xh), (yl, yh) = b.box_of(0)
+            (ul, uh), (vl, vh) = b.box_of(1)
+            pts = rng.uniform((xl, yl, ul, vl), (xh, yh, uh, vh))
+            z0 += [np.log(scale / max(np.sqrt((xh - xl) * (yh - yl) * (uh - ul) * (vh - vl)), 1e-300)), *pts]
         with np.errstate(all="ignore"):
             fit = least_squares(residual, np.array(z0), method="lm", max_nfev=200)
         if np.all(np.isfinite(fit.x)):
@@ -246,6 +250,6 @@ def nls_starts(design: Design, blocks: list, both: list, q: np.ndarray, keep: in
     starts = []
     for _, z in fits[:keep]:
         for fixed in (0, 1):
-            starts.append((fixed, [_clip(tuple(z[5 * i + 1 + 2 * fixed:5 * i + 3 + 2 * fixed]), b.box)
+            starts.append((fixed, [_clip(tuple(z[5 * i + 1 + 2 * fixed:5 * i + 3 + 2 * fixed]), b.box_of(fixed))
                                    for i, b in enumerate(both)]))
     return starts

@@ -40,7 +40,9 @@ class Block:
     ``kind`` is ``"spring"`` or ``"mass"``; ``ends`` the attachments ``(body, point or
     None)`` (one for a counterweight); ``free`` the index of the free end (``None`` if
     both ends are fixed); ``cols`` the indices of ``(k or M, m_x, m_y)`` in ``x``; ``box``
-    the local box ``((x_lo, x_hi), (y_lo, y_hi))`` (m) of the free point.
+    the local box ``((x_lo, x_hi), (y_lo, y_hi))`` (m) of the free point; ``end_boxes`` a spring's
+    box for each end, that of the body the end is on (the box of whichever end is free, and of
+    both ends of a spring whose two ends are free: ``free == "both"``).
     """
 
     kind: str
@@ -48,6 +50,19 @@ class Block:
     free: int | None = None
     cols: list = field(default_factory=list)
     box: tuple = ((-1.0, 1.0), (-1.0, 1.0))
+    end_boxes: list | None = None
+
+    def box_of(self, end: int) -> tuple:
+        """The box (m, local frame) of end ``end`` (0 or 1): its body's box, else the block's box."""
+        return self.end_boxes[end] if self.end_boxes is not None else self.box
+
+    def set_free(self, end: int | str | None) -> None:
+        """Free end ``end`` (0, 1, ``"both"`` or None); the block's box becomes that end's box."""
+        self.free = end  # type: ignore[assignment]  # "both" only while a spring's two ends are lifted
+        if end == "both":
+            self.box = self.box_of(0)
+        elif isinstance(end, int):
+            self.box = self.box_of(end)
 
 
 @dataclass
@@ -98,9 +113,32 @@ def _spring_columns(poses, block):
         d = _world(poses, ba, pa) - _world(poses, bb, pb)
         return [0.5 * (d * d).sum(-1)]
     (bf, _), (bx, px) = (block.ends[1], block.ends[0]) if block.free == 1 else (block.ends[0], block.ends[1])
-    u = _world(poses, bx, px) - poses[:, bf, :2]
+    cx, cy = box_centre(block.box)  # measured from the free point's box centre c: a far box costs no digits
+    u = _world(poses, bx, px) - _world(poses, bf, (cx, cy))
     ux, uy = turn_back(np.cos(poses[:, bf, 2]), np.sin(poses[:, bf, 2]), (u[:, 0], u[:, 1]))   # R_c^T u
-    return [0.5 * (u * u).sum(-1), -ux, -uy]
+    # 0.5 |u + R c|^2 and -(R^T u + c), less their constants 0.5 |c|^2 and -c (see columns)
+    return [0.5 * (u * u).sum(-1) + ux * cx + uy * cy, -ux, -uy]
+
+
+def box_centre(box: tuple) -> tuple[float, float]:
+    """The centre (m) of a box ``((x_lo, x_hi), (y_lo, y_hi))``.
+
+    Examples
+    --------
+    >>> box_centre(((9996.0, 10004.0), (-30004.0, -29996.0)))
+    (10000.0, -30000.0)
+    """
+    (xl, xh), (yl, yh) = box
+    return ((xl + xh) / 2, (yl + yh) / 2)
+
+
+def _constants(block) -> list[float]:
+    """The constants left out of a spring's columns with one free end (``0.5 |c|^2`` and ``-c``, with
+    ``c`` its box centre): they add to the means, the preload's linear part."""
+    if block.kind != "spring" or block.free not in (0, 1):
+        return []
+    cx, cy = box_centre(block.box)
+    return [0.5 * (cx * cx + cy * cy), -cx, -cy]
 
 
 def _mass_columns(poses, block):
@@ -149,7 +187,8 @@ def columns(design, blocks, q) -> Problem:
         new = _spring_columns(poses, block) if block.kind == "spring" else _mass_columns(poses, block)
         block.cols = list(range(len(cols), len(cols) + len(new)))
         cols += new
-        mean += [float(np.mean(c)) if block.kind == "spring" else 0.0 for c in new]
+        extra = _constants(block) or [0.0] * len(new)
+        mean += [float(np.mean(c)) + e if block.kind == "spring" else 0.0 for c, e in zip(new, extra)]
     A = np.stack(cols, -1) if cols else np.zeros((len(q), 0))
     vl, vs = design.element_energies(q)
     v = vl.sum(-1) + vs.sum(-1)
@@ -223,11 +262,13 @@ def lp_constraints(p: Problem, S: np.ndarray):
         if b.free is None:
             continue
         k = b.cols[0]
-        for axis, (lo, hi) in enumerate(b.box):
-            m = b.cols[1 + axis]
-            for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
-                row = np.zeros(n)
-                row[m], row[k] = sign * S[m], -sign * lim * S[k]
-                rows.append(row)
+        boxed = [(1, b.box)] + ([(3, b.box_of(1))] if b.free == "both" else [])  # (first column, box)
+        for first, box in boxed:
+            for axis, (lo, hi) in enumerate(box):
+                m = b.cols[first + axis]
+                for sign, lim in ((1.0, hi), (-1.0, lo)):  # sign (m - lim k) <= 0
+                    row = np.zeros(n)
+                    row[m], row[k] = sign * S[m], -sign * lim * S[k]
+                    rows.append(row)
     A_ub = np.array(rows) if rows else None
     return bounds, A_ub, (np.zeros(len(rows)) if rows else None)

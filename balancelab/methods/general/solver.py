@@ -56,7 +56,8 @@ def rank_of(M: np.ndarray) -> tuple[int, np.ndarray, np.ndarray, np.ndarray]:
 
 def column_norms(p: Problem) -> np.ndarray:
     """Norms of the columns of ``p.A``; columns of round-off size (a spring whose length never
-    changes) are set to exact zeros and get the largest norm, so that scaling stays finite.
+    changes) are set to exact zeros and get the largest norm, so that scaling stays finite; if every
+    column is zero (no candidate can change the energy), all norms are one.
 
     Examples
     --------
@@ -65,7 +66,10 @@ def column_norms(p: Problem) -> np.ndarray:
     ([1.4142, 1.4142], [0.0, 0.0])
     """
     D = np.linalg.norm(p.A, axis=0)
-    top = max(D.max(initial=0.0), 1e-300)
+    top = D.max(initial=0.0)
+    if not top > 0.0:
+        p.A[:] = 0.0
+        return np.ones_like(D)
     dead = D <= 1e-12 * top
     p.A[:, dead] = 0.0
     return np.where(dead, top, D)

@@ -203,17 +203,17 @@ def _wider(p: Problem, D: np.ndarray):
 def _in_square(p: Problem, D: np.ndarray, w: float, eq, sigma: float):
     from scipy.optimize import linprog
 
-    boxes = [b.box for b in p.blocks]
+    boxes = [(b.box, b.end_boxes) for b in p.blocks]
     try:
         for b in p.blocks:
-            (xl, xh), (yl, yh) = b.box
-            cx, cy = (xl + xh) / 2, (yl + yh) / 2
-            b.box = ((cx - w, cx + w), (cy - w, cy + w))
+            b.box = _square(b.box, w)
+            if b.end_boxes is not None:
+                b.end_boxes = [_square(box, w) for box in b.end_boxes]
         S = sigma / D
         bounds, A_ub, b_ub = lp_constraints(p, S)
     finally:
-        for b, box in zip(p.blocks, boxes):
-            b.box = box
+        for b, (box, ends) in zip(p.blocks, boxes):
+            b.box, b.end_boxes = box, ends
     lp = linprog(np.zeros(p.nvar), A_ub=A_ub, b_ub=b_ub, A_eq=eq[0], b_eq=eq[1], bounds=bounds, method="highs")
     return lp.x * S if lp.status == 0 else None
 
@@ -254,3 +254,10 @@ def limit(name: str, what: str, value: float, unit: str, bound: float, above: bo
     return _error("limit", f"{name}: no balanced design from these candidates: {what} would have to be "
                   f"{value:.3g} {unit}, {side} a design may hold ({bound:g} {unit}); move the candidate's "
                   f"points ({hint}) or choose other candidates")
+
+
+def _square(box: tuple, w: float) -> tuple:
+    """The square of half-width ``w`` (m) about ``box``'s centre."""
+    (xl, xh), (yl, yh) = box
+    cx, cy = (xl + xh) / 2, (yl + yh) / 2
+    return ((cx - w, cx + w), (cy - w, cy + w))
