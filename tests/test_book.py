@@ -8,6 +8,7 @@ tests themselves). The browser part needs Debian's ``chromium`` (installed by
 """
 from __future__ import annotations
 
+import fcntl
 import functools
 import html
 import http.server
@@ -52,9 +53,21 @@ def site() -> Path:
     """The site, built with every notebook re-executed and warnings as errors."""
     if os.environ.get("BALANCELAB_BOOK_PREBUILT") == "1" and (SITE / "index.html").is_file():
         return SITE
-    r = subprocess.run([sys.executable, "scripts/build_book.py", "--force", "--quiet"], cwd=ROOT,
-                       capture_output=True, text=True, timeout=1800)
-    assert r.returncode == 0, f"book build failed:\n{r.stdout[-6000:]}\n{r.stderr[-6000:]}"
+    # One build per test run, whichever worker gets here first: pytest-xdist spread this module's tests
+    # over both workers (the group mark did not hold), and two builds raced in _build/html (one's
+    # clean-up removed the other's PDF). The others wait on the lock and reuse the build of this run.
+    run = os.environ.get("PYTEST_XDIST_TESTRUNUID") or f"pid{os.getpid()}"
+    stamp = SITE.parent / "site-test-run.txt"
+    SITE.parent.mkdir(exist_ok=True)
+    with open(SITE.parent / "site-build.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if stamp.is_file() and stamp.read_text() == run and (SITE / "index.html").is_file():
+            return SITE
+        stamp.unlink(missing_ok=True)
+        r = subprocess.run([sys.executable, "scripts/build_book.py", "--force", "--quiet"], cwd=ROOT,
+                           capture_output=True, text=True, timeout=1800)
+        assert r.returncode == 0, f"book build failed:\n{r.stdout[-6000:]}\n{r.stderr[-6000:]}"
+        stamp.write_text(run)
     return SITE
 
 
