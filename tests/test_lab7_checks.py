@@ -12,9 +12,9 @@ from balancelab.methods.general.examples import all_pairs, arm_3r, parallelogram
 
 def test_every_task_is_registered_with_points_an_answer_form_and_a_variable():
     lab = tasks("lab7")
-    assert [t.id for t in lab] == ["7.1", "7.2", "7.3", "7.4"]
-    assert sum(t.points for t in lab) == 6.0
-    assert [t.kind for t in lab] == ["numeric", "numeric", "design", "numeric"]
+    assert [t.id for t in lab] == ["7.1", "7.2", "7.3", "7.4", "7.5"]
+    assert sum(t.points for t in lab) == 8.0  # labs/README.md's points table
+    assert [t.kind for t in lab] == ["numeric", "numeric", "design", "numeric", "symbolic"]
     for t in lab:
         verdict = check(t.id, None)  # a malformed answer is a verdict, not an exception
         assert verdict.task == t.id and not verdict.correct and verdict.score == 0.0 and verdict.hint
