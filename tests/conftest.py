@@ -220,3 +220,30 @@ def pytest_collection_modifyitems(session, config, items):
     for item in site:
         item.add_marker(pytest.mark.xdist_group("site"))
     items[:] = [item for item in items if item.path.name not in SITE_GROUP] + site
+
+
+def scissors_lift_linkage(lam: float, stroke: bool = True):
+    """The catalog's scissors lift as a ``bl.Linkage`` at scale ``lam`` (lengths x lam), every local
+    point on the x-axis, with the catalog's loads and no spring; the bottom slider's stroke is
+    (0.01..0.49) * lam, or the default one."""
+    import balancelab as bl
+
+    cat = bl.catalog()["scissors_lift"]()
+    a, h = 0.5 * lam, 0.25 * lam
+    lk = bl.Linkage(f"lift x{lam:g}")
+    for name in cat.bodies[1:]:
+        lk.body(name)
+    lk.revolute("ground", (0.0, 0.0), "arm 2", (0.0, 0.0))
+    lk.revolute("arm 2", (h, 0.0), "arm 3", (h, 0.0))
+    lk.revolute("arm 3", (0.0, 0.0), "slider 4", (0.0, 0.0))
+    lk.prismatic("ground", (0.0, 0.0), "slider 4", (0.0, 0.0), axis=(1.0, 0.0),
+                 stroke=(0.01 * lam, 0.49 * lam) if stroke else None)
+    lk.revolute("arm 3", (a, 0.0), "arm 5", (0.0, 0.0))
+    lk.revolute("arm 2", (a, 0.0), "arm 6", (0.0, 0.0))
+    lk.revolute("arm 5", (h, 0.0), "arm 6", (h, 0.0))
+    lk.revolute("arm 6", (a, 0.0), "platform 8", (0.0, 0.0))
+    lk.revolute("arm 5", (a, 0.0), "slider 7", (0.0, 0.0))
+    lk.prismatic("platform 8", (0.0, 0.0), "slider 7", (0.0, 0.0), axis=(1.0, 0.0))
+    for ld in cat.loads:
+        lk.load(ld.body, ld.force, com=(ld.point[0] * lam, ld.point[1] * lam), name=ld.name)
+    return lk

@@ -6,30 +6,13 @@ import numpy as np
 import pytest
 
 import balancelab as bl
+from conftest import scissors_lift_linkage
 
 
 def flat_lift(lam: float, stroke: bool = True) -> bl.Design:
     """The catalog's scissors lift at scale ``lam``, drawn flat: every local point on the x-axis,
     no ``guess=``; the bottom slider's stroke (0.01..0.49) * lam, or the default one."""
-    cat = bl.catalog()["scissors_lift"]()
-    a, h = 0.5 * lam, 0.25 * lam
-    lk = bl.Linkage(f"flat lift x{lam:g}")
-    for name in cat.bodies[1:]:
-        lk.body(name)
-    lk.revolute("ground", (0.0, 0.0), "arm 2", (0.0, 0.0))
-    lk.revolute("arm 2", (h, 0.0), "arm 3", (h, 0.0))
-    lk.revolute("arm 3", (0.0, 0.0), "slider 4", (0.0, 0.0))
-    lk.prismatic("ground", (0.0, 0.0), "slider 4", (0.0, 0.0), axis=(1.0, 0.0),
-                 stroke=(0.01 * lam, 0.49 * lam) if stroke else None)
-    lk.revolute("arm 3", (a, 0.0), "arm 5", (0.0, 0.0))
-    lk.revolute("arm 2", (a, 0.0), "arm 6", (0.0, 0.0))
-    lk.revolute("arm 5", (h, 0.0), "arm 6", (h, 0.0))
-    lk.revolute("arm 6", (a, 0.0), "platform 8", (0.0, 0.0))
-    lk.revolute("arm 5", (a, 0.0), "slider 7", (0.0, 0.0))
-    lk.prismatic("platform 8", (0.0, 0.0), "slider 7", (0.0, 0.0), axis=(1.0, 0.0))
-    for ld in cat.loads:
-        lk.load(ld.body, ld.force, com=(ld.point[0] * lam, ld.point[1] * lam), name=ld.name)
-    return lk.build(driving=["s_1"])
+    return scissors_lift_linkage(lam, stroke).build(driving=["s_1"])
 
 
 def wrap(x):

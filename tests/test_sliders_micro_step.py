@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import balancelab as bl
+from conftest import scissors_lift_linkage
 
 K, F, B = 100.0, 20.0, 0.3
 
@@ -51,22 +52,7 @@ def test_steps_scale_with_slides_only():
 def scissors(lam: float) -> bl.Design:
     """The catalog's scissors lift rebuilt at scale ``lam`` (lengths x lam, rates / lam)."""
     cat = bl.catalog()["scissors_lift"]()
-    a, h = 0.5 * lam, 0.25 * lam
-    lk = bl.Linkage(f"lift x{lam:g}")
-    for name in cat.bodies[1:]:
-        lk.body(name)
-    lk.revolute("ground", (0.0, 0.0), "arm 2", (0.0, 0.0))
-    lk.revolute("arm 2", (h, 0.0), "arm 3", (h, 0.0))
-    lk.revolute("arm 3", (0.0, 0.0), "slider 4", (0.0, 0.0))
-    lk.prismatic("ground", (0.0, 0.0), "slider 4", (0.0, 0.0), axis=(1.0, 0.0), stroke=(0.01 * lam, 0.49 * lam))
-    lk.revolute("arm 3", (a, 0.0), "arm 5", (0.0, 0.0))
-    lk.revolute("arm 2", (a, 0.0), "arm 6", (0.0, 0.0))
-    lk.revolute("arm 5", (h, 0.0), "arm 6", (h, 0.0))
-    lk.revolute("arm 6", (a, 0.0), "platform 8", (0.0, 0.0))
-    lk.revolute("arm 5", (a, 0.0), "slider 7", (0.0, 0.0))
-    lk.prismatic("platform 8", (0.0, 0.0), "slider 7", (0.0, 0.0), axis=(1.0, 0.0))
-    for ld in cat.loads:
-        lk.load(ld.body, ld.force, com=(ld.point[0] * lam, ld.point[1] * lam), name=ld.name)
+    lk = scissors_lift_linkage(lam)
     s1 = cat.springs[0]
     lk.spring(s1.a[0], tuple(np.multiply(s1.a[1], lam)), s1.b[0], tuple(np.multiply(s1.b[1], lam)),
               k=s1.k / lam, free_length=s1.free_length * lam, name="k1")
